@@ -1,0 +1,91 @@
+// Reading ../shared/golden-format JSON (copied into tests/data/golden) and comparing with the
+// golden rule: |got − expected| ≤ abs + rel · scale, scale = max |expected| of the group.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+namespace pgamesh::test {
+
+using json = nlohmann::json;
+
+inline json load_golden(const std::string& name) {
+  std::ifstream in(std::string(PGAMESH_GOLDEN_DIR) + "/" + name);
+  if (!in) throw std::runtime_error("cannot open golden file " + name);
+  return json::parse(in);
+}
+
+struct Tolerance {
+  double rel = 1e-12, abs = 1e-12;
+};
+
+inline Tolerance tolerance_of(const json& file, const json& c) {
+  Tolerance t;
+  if (file.contains("tolerance_default")) {
+    t.rel = file["tolerance_default"].value("rel", t.rel);
+    t.abs = file["tolerance_default"].value("abs", t.abs);
+  }
+  if (c.contains("tolerance") && c["tolerance"].is_object()) {
+    t.rel = c["tolerance"].value("rel", t.rel);
+    t.abs = c["tolerance"].value("abs", t.abs);
+  }
+  return t;
+}
+
+// Compares a group of values (array, matrix flattened, or blade dictionary) as one.
+inline ::testing::AssertionResult near_group(const std::vector<double>& got,
+                                             const std::vector<double>& expected, Tolerance t) {
+  if (got.size() != expected.size())
+    return ::testing::AssertionFailure() << "size " << got.size() << " != " << expected.size();
+  double scale = 0;
+  for (double e : expected) scale = std::max(scale, std::abs(e));
+  for (std::size_t i = 0; i < got.size(); ++i) {
+    const double err = std::abs(got[i] - expected[i]);
+    if (!(err <= t.abs + t.rel * scale))
+      return ::testing::AssertionFailure()
+             << "component " << i << ": got " << got[i] << ", expected " << expected[i]
+             << " (error " << err << ", allowed " << t.abs + t.rel * scale << ")";
+  }
+  return ::testing::AssertionSuccess();
+}
+
+inline ::testing::AssertionResult near_scalar(double got, double expected, Tolerance t) {
+  return near_group({got}, {expected}, t);
+}
+
+// Flattens a JSON number, array or nested array (matrix) into a vector.
+inline std::vector<double> flatten(const json& j) {
+  std::vector<double> out;
+  if (j.is_number()) {
+    out.push_back(j.get<double>());
+  } else if (j.is_array()) {
+    for (const auto& e : j) {
+      auto sub = flatten(e);
+      out.insert(out.end(), sub.begin(), sub.end());
+    }
+  }
+  return out;
+}
+
+// A blade dictionary {"e01": 2.0, ...} as a map (missing keys are zero).
+inline std::map<std::string, double> blades(const json& j) {
+  std::map<std::string, double> out;
+  for (auto it = j.begin(); it != j.end(); ++it) out[it.key()] = it.value().get<double>();
+  return out;
+}
+
+// Directory of ../shared/meshes, or empty when the folder is absent (callers GTEST_SKIP visibly).
+inline std::string shared_meshes_dir() {
+  const std::filesystem::path p(PGAMESH_SHARED_MESHES_DIR);
+  return std::filesystem::is_directory(p) ? p.string() : std::string();
+}
+
+}  // namespace pgamesh::test
