@@ -6,7 +6,7 @@ what=${1:-build}
 pkgs=(cmake g++ make pkg-config libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev
       libgmp-dev libcpp-httplib-dev)
 case "$what" in
-  test) pkgs+=(clang libclang-rt-14-dev clang-format chromium nodejs npm) ;;
+  test) pkgs+=(clang libclang-rt-14-dev clang-format chromium) ;;
   bench) pkgs+=(admesh hyperfine libcgal-dev python3-vtk9 python3-stl python3-open3d python3-numpy time) ;;
 esac
 missing=()

@@ -7,7 +7,7 @@
 
 namespace pgamesh::cli {
 
-int run_demo(int, char**) {
+static int run_demo(int, char**) {
   using namespace pgamesh::pga3;
   const auto o = origin<double>();
   const auto a = point(1.0, 0.0, 0.0), b = point(0.0, 1.0, 0.0), c = point(0.0, 0.0, 1.0);
@@ -19,5 +19,11 @@ int run_demo(int, char**) {
   std::printf("tetra o v a v b v c: volume (o v F)/6 = %.17g (1/6)\n", (o & face) / 6);
   return 0;
 }
+
+namespace {
+const RegisterCommand registered{
+    {"demo", "a short PGA demonstration: carriers of a tetrahedron and their magnitudes", run_demo,
+     90}};
+}  // namespace
 
 }  // namespace pgamesh::cli

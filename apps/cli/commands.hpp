@@ -1,8 +1,9 @@
-// The table of CLI commands. Each command lives in its own file (cmd_<name>.cpp) and receives
-// argv starting at its own name.
+// The registry of CLI commands. Each command lives in its own file (cmd_<name>.cpp), registers
+// itself with a static RegisterCommand, and receives argv starting at its own name.
 #pragma once
 
-#include <span>
+#include <algorithm>
+#include <vector>
 
 namespace pgamesh::cli {
 
@@ -10,16 +11,25 @@ struct Command {
   const char* name;
   const char* summary;
   int (*run)(int argc, char** argv);
+  int order;  // position in `pgamesh --help` (ascending)
 };
 
-int run_demo(int argc, char** argv);
+inline std::vector<Command>& command_registry() {
+  static std::vector<Command> registry;
+  return registry;
+}
 
-// One entry per command, in the order `pgamesh --help` lists them.
-inline std::span<const Command> commands() {
-  static const Command table[] = {
-      {"demo", "a short PGA demonstration: carriers, magnitudes and a motor", run_demo},
-  };
-  return table;
+struct RegisterCommand {
+  explicit RegisterCommand(Command c) {
+    auto& r = command_registry();
+    r.insert(std::upper_bound(r.begin(), r.end(), c,
+                              [](const Command& a, const Command& b) { return a.order < b.order; }),
+             c);
+  }
+};
+
+inline const std::vector<Command>& commands() {
+  return command_registry();
 }
 
 }  // namespace pgamesh::cli
