@@ -1,0 +1,87 @@
+// Volume integrals of a solid from its oriented boundary triangles: the one place where the
+// per-face sums of paper Table 1 and §5 (as corrected in ERRATA §0.2, §1) live.
+//
+// Each outward (CCW-from-outside) triangle (a, b, c), given relative to a reference point o, adds
+// the signed tetrahedron (o, a, b, c) with D = o ∨ a ∨ b ∨ c = o ∨ F = det(a, b, c) = 6 V_tet:
+//   volume        V   = (1/6)   Σ D                                   (paper Table 1, o on the
+//   left) first moment  ∫r  = (1/24)  Σ D (a + b + c + o)                   (paper eq. 5.3, ERRATA
+//   §0.2) second moment ∫rrᵀ = (1/120) Σ D (aaᵀ + bbᵀ + ccᵀ + s sᵀ), s = a+b+c (pyramid ref. eq.
+//   24: the 1/60
+//                   frame of paper eq. 5.5/5.6 summed over the vertex pairs is the same tensor)
+// The surface sums ride along: area ½ Σ ‖F‖ and the carrier sum Σ F, whose Euclidean norm is twice
+// the gap of an open surface (Cor. 4.1).
+//
+// Coordinates are taken relative to a reference point near the mesh before the carrier is formed,
+// which keeps every digit whatever the distance of the mesh from the origin (ERRATA §6).
+#pragma once
+
+#include <array>
+
+#include "pgamesh/algebra/pga3.hpp"
+#include "pgamesh/algebra/vec3.hpp"
+#include "pgamesh/geometry/carrier.hpp"
+
+namespace pgamesh {
+
+// Symmetric 3×3 matrix, row-major, plain data.
+using Mat3 = std::array<std::array<double, 3>, 3>;
+
+// Raw sums, scaled as accumulated (×2, ×6, ×24, ×120): adding partial sums is reassociation only,
+// so sums from several threads combine with +=, in a fixed order for reproducible results.
+struct BoundarySums {
+  double area2 = 0;                   // Σ ‖F‖ = 2 × area
+  pga3::Plane<double> carrier_sum{};  // Σ F
+  double volume6 = 0;                 // Σ o ∨ F
+  Vec3d moment24{};                   // Σ (o ∨ F)(a + b + c)
+  std::array<double, 6> second120{};  // Σ (o ∨ F)(aaᵀ + bbᵀ + ccᵀ + ssᵀ): xx, yy, zz, xy, yz, zx
+
+  BoundarySums& operator+=(const BoundarySums& o);
+};
+
+// Adds the triangle (a, b, c), coordinates relative to the reference point.
+inline void add_triangle(BoundarySums& s, Vec3d a, Vec3d b, Vec3d c) {
+  const pga3::Plane<double> f = triangle_carrier(a, b, c);
+  const double d = origin_join(f);
+  s.area2 += pga3::norm(f);
+  s.carrier_sum.e0 += f.e0;
+  s.carrier_sum.e1 += f.e1;
+  s.carrier_sum.e2 += f.e2;
+  s.carrier_sum.e3 += f.e3;
+  s.volume6 += d;
+  const Vec3d sum = a + b + c;
+  s.moment24 += d * sum;
+  s.second120[0] += d * (a.x * a.x + b.x * b.x + c.x * c.x + sum.x * sum.x);
+  s.second120[1] += d * (a.y * a.y + b.y * b.y + c.y * c.y + sum.y * sum.y);
+  s.second120[2] += d * (a.z * a.z + b.z * b.z + c.z * c.z + sum.z * sum.z);
+  s.second120[3] += d * (a.x * a.y + b.x * b.y + c.x * c.y + sum.x * sum.y);
+  s.second120[4] += d * (a.y * a.z + b.y * b.z + c.y * c.z + sum.y * sum.z);
+  s.second120[5] += d * (a.z * a.x + b.z * b.x + c.z * c.x + sum.z * sum.x);
+}
+
+// The moments of the solid at density 1, about the reference point.
+struct BodyMoments {
+  double area = 0;
+  double volume = 0;    // signed: positive for an outward-oriented closed surface
+  Vec3d first{};        // ∫ r dV about the reference point
+  Mat3 second{};        // ∫ r rᵀ dV about the reference point
+  double gap_area = 0;  // ½ ‖Σ F‖ (Cor. 4.1): 0 for a closed surface
+};
+
+BodyMoments body_moments(const BoundarySums& s);
+
+// Centre of mass relative to the reference point: ∫r / V (undefined when V = 0).
+inline Vec3d centroid(const BodyMoments& m) {
+  return m.first / m.volume;
+}
+
+// ∫ (r − c)(r − c)ᵀ dV: second moments about the centroid, by the parallel-axis shift.
+Mat3 central_second_moment(const BodyMoments& m);
+
+// Inertia tensor from a second-moment matrix M at density ρ: ρ (tr(M) 1 − M), whose off-diagonal
+// entries are minus the products of inertia (ERRATA §0.2, I_xy = −∫xy dm).
+Mat3 inertia_from_second_moment(const Mat3& second, double density);
+
+// parallel(r) = |r|² 1 − r rᵀ (pyramid reference eq. 24): I_O = I_C + m parallel(c).
+Mat3 parallel_axis(Vec3d r);
+
+}  // namespace pgamesh

@@ -1,0 +1,54 @@
+#include "pgamesh/geometry/body_moments.hpp"
+
+namespace pgamesh {
+
+BoundarySums& BoundarySums::operator+=(const BoundarySums& o) {
+  area2 += o.area2;
+  carrier_sum.e0 += o.carrier_sum.e0;
+  carrier_sum.e1 += o.carrier_sum.e1;
+  carrier_sum.e2 += o.carrier_sum.e2;
+  carrier_sum.e3 += o.carrier_sum.e3;
+  volume6 += o.volume6;
+  moment24 += o.moment24;
+  for (int i = 0; i < 6; ++i) second120[i] += o.second120[i];
+  return *this;
+}
+
+BodyMoments body_moments(const BoundarySums& s) {
+  BodyMoments m;
+  m.area = s.area2 / 2;
+  m.volume = s.volume6 / 6;
+  m.first = s.moment24 / 24.0;
+  const auto& q = s.second120;
+  m.second = {{{q[0], q[3], q[5]}, {q[3], q[1], q[4]}, {q[5], q[4], q[2]}}};
+  for (auto& row : m.second)
+    for (double& v : row) v /= 120;
+  m.gap_area = pga3::norm(s.carrier_sum) / 2;
+  return m;
+}
+
+Mat3 central_second_moment(const BodyMoments& m) {
+  const Vec3d c = centroid(m);
+  Mat3 out = m.second;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) out[i][j] -= m.volume * c[i] * c[j];
+  return out;
+}
+
+Mat3 inertia_from_second_moment(const Mat3& second, double density) {
+  const double trace = second[0][0] + second[1][1] + second[2][2];
+  Mat3 out{};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) out[i][j] = density * ((i == j ? trace : 0.0) - second[i][j]);
+  return out;
+}
+
+Mat3 parallel_axis(Vec3d r) {
+  const double r2 = dot(r, r);
+  Mat3 out{};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) out[i][j] = (i == j ? r2 : 0.0) - r[i] * r[j];
+  return out;
+}
+
+}  // namespace pgamesh
