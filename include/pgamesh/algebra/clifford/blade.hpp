@@ -1,0 +1,56 @@
+// Basis blades as bitmasks: bit i set <=> generator i is a factor, factors in ascending order.
+// These are the only places where the sign of a product of basis blades is computed; the general
+// engine (clifford::Algebra) and the compile-time PGA R(d,0,1) (pgad) both call them.
+#pragma once
+
+#include <bit>
+#include <cstdint>
+
+namespace pgamesh::clifford {
+
+using BladeMask = std::uint32_t;
+
+// Grade of a basis blade = number of its factors.
+constexpr int grade_of(BladeMask m) {
+  return std::popcount(m);
+}
+
+// Sign of e_a e_b = ±e_a e_b reordered into ascending factors (before metric contraction):
+// (−1)^(number of pairs i in a, j in b with i > j), the transpositions that sort the factors.
+constexpr double reorder_sign(BladeMask a, BladeMask b) {
+  int swaps = 0;
+  for (a >>= 1; a != 0; a >>= 1) swaps += std::popcount(a & b);
+  return (swaps & 1) ? -1.0 : 1.0;
+}
+
+// Sign of the reverse of a grade-k blade: (−1)^(k(k−1)/2).
+constexpr double reverse_sign(int k) {
+  return ((k * (k - 1) / 2) & 1) ? -1.0 : 1.0;
+}
+
+// Sign of the grade involution of a grade-k blade: (−1)^k.
+constexpr double involution_sign(int k) {
+  return (k & 1) ? -1.0 : 1.0;
+}
+
+// Sign of the Clifford conjugate (reverse of the involution) of a grade-k blade: (−1)^(k(k+1)/2).
+constexpr double conjugate_sign(int k) {
+  return ((k * (k + 1) / 2) & 1) ? -1.0 : 1.0;
+}
+
+// Hodge (complement) dual of a basis blade in an n-generator algebra, ERRATA §0.1:
+// e_J e_J* = I with I = e_0 e_1 … e_(n−1) (all factors ascending), computed without the metric:
+// e_J* = s e_(~J) with s chosen so that e_J ∧ (s e_(~J)) = I, i.e. s = reorder_sign(J, ~J).
+constexpr double dual_sign(BladeMask j, int n) {
+  const BladeMask all = (n >= 32) ? ~BladeMask{0} : ((BladeMask{1} << n) - 1);
+  return reorder_sign(j, all & ~j);
+}
+
+// Undual: A^(−*) with A^(−*) ∧ A = I (ERRATA §0.1), so e_J^(−*) = s e_(~J), s = reorder_sign(~J,
+// J).
+constexpr double undual_sign(BladeMask j, int n) {
+  const BladeMask all = (n >= 32) ? ~BladeMask{0} : ((BladeMask{1} << n) - 1);
+  return reorder_sign(all & ~j, j);
+}
+
+}  // namespace pgamesh::clifford
