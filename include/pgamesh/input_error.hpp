@@ -26,12 +26,22 @@ class InputError : public std::runtime_error {
   // "FILE:LINE:COL: problem" for text, "FILE: byte OFFSET: problem" for binary input.
   static std::string format(const std::string& file, InputPosition where,
                             const std::string& problem) {
+    // Appended piece by piece: GCC 12's -Wrestrict misfires on `"literal" + std::string&&`.
+    std::string s = file;
     if (where.has_line) {
-      std::string s = file + ":" + std::to_string(where.line);
-      if (where.column) s += ":" + std::to_string(where.column);
-      return s + ": " + problem;
+      s += ':';
+      s += std::to_string(where.line);
+      if (where.column) {
+        s += ':';
+        s += std::to_string(where.column);
+      }
+    } else {
+      s += ": byte ";
+      s += std::to_string(where.byte_offset);
     }
-    return file + ": byte " + std::to_string(where.byte_offset) + ": " + problem;
+    s += ": ";
+    s += problem;
+    return s;
   }
 
  private:

@@ -1,0 +1,41 @@
+// A whole input file as one read-only byte span: memory-mapped for regular files (the readers then
+// stream through the page cache without copying), read into a buffer for pipes and stdin.
+#pragma once
+
+#include <cstddef>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace pgamesh {
+
+class MappedFile {
+ public:
+  // Maps `path` read-only. "-" reads standard input; pipes and other non-regular files are read
+  // into memory. Throws InputError for a missing or unreadable path and for a directory. An empty
+  // file maps to an empty span.
+  static MappedFile open(const std::string& path);
+
+  MappedFile() = default;
+  MappedFile(MappedFile&& other) noexcept;
+  MappedFile& operator=(MappedFile&& other) noexcept;
+  MappedFile(const MappedFile&) = delete;
+  MappedFile& operator=(const MappedFile&) = delete;
+  ~MappedFile();
+
+  // The file's bytes, valid while this object lives.
+  std::span<const char> bytes() const { return {data_, size_}; }
+  // The path given to open().
+  const std::string& path() const { return path_; }
+
+ private:
+  void release() noexcept;
+
+  std::string path_;
+  const char* data_ = nullptr;
+  std::size_t size_ = 0;
+  bool mapped_ = false;      // data_ is an mmap region to munmap
+  std::vector<char> owned_;  // contents of a pipe or stdin
+};
+
+}  // namespace pgamesh
