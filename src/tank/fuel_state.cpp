@@ -1,0 +1,56 @@
+#include "pgamesh/tank/fuel_state.hpp"
+
+namespace pgamesh::tank {
+
+FuelState fuel_state(const Tank& tank, const FuelPlane& plane, const SliceContext& ctx,
+                     const SliceSums& sums, Side side) {
+  FuelState st;
+  st.plane = plane;
+  BoundarySums wall = sums.wall;
+  if (side == Side::ullage) {
+    wall = tank.total;
+    subtract(wall, sums.wall);
+  }
+  // The wall sums are about ctx.reference; so must the tank total be for the ullage side.
+  BoundarySums body = wall;
+  if (ctx.cone_over_surface) body += sums.surface_cone;
+  const BodyMoments wm = body_moments(wall);
+  const BodyMoments bm = body_moments(body);
+  st.volume = bm.volume;
+  st.fraction = st.volume / tank.volume;
+  st.ullage_volume = tank.volume - st.volume;
+  st.wetted_area = wm.area;
+  st.surface_area = wm.gap_area;
+  st.surface = free_surface(sums.surface, ctx.frame);
+  if (st.volume > 0) {
+    st.has_center = true;
+    st.center_of_mass = ctx.reference + centroid(bm);
+    st.inertia_com = inertia_from_second_moment(central_second_moment(bm), 1.0);
+  }
+  // F about the reference → absolute coordinates: the e0 coefficient is −n·(a − r) per triangle.
+  st.carrier_sum = wall.carrier_sum;
+  st.carrier_sum.e0 -= dot(wall.carrier_sum.normal(), ctx.reference);
+  return st;
+}
+
+FuelState fuel_naive(const Tank& tank, const FuelPlane& plane) {
+  SliceContext ctx;
+  ctx.frame = surface_frame(plane, tank.reference);
+  ctx.reference = ctx.frame.origin;  // o′ on the plane: the free surface adds nothing (eq. 4.13)
+  ctx.cone_over_surface = false;
+  SliceSums sums;
+  const pga3::Plane<double> p = plane.plane();
+  for (const auto& tri : tank.triangles) {
+    Vec3d v[3];
+    double d[3];
+    for (int i = 0; i < 3; ++i) {
+      const Vec3d x = tank.vertices[tri[i]];
+      d[i] = pga3::join(p, pga3::point(x));
+      v[i] = x - ctx.reference;
+    }
+    add_kept_part(sums, ctx, Side::fuel, v, d);
+  }
+  return fuel_state(tank, plane, ctx, sums, Side::fuel);
+}
+
+}  // namespace pgamesh::tank

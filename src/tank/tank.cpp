@@ -1,0 +1,63 @@
+#include "pgamesh/tank/tank.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace pgamesh::tank {
+
+Tank make_tank(const Mesh& mesh) {
+  Tank t;
+  if (mesh.vertices.empty() || mesh.face_count() == 0)
+    throw std::invalid_argument("the mesh has no faces");
+  t.vertices = mesh.vertices;
+  const double inf = std::numeric_limits<double>::infinity();
+  t.lower = {inf, inf, inf};
+  t.upper = {-inf, -inf, -inf};
+  for (const Vec3d& v : t.vertices) {
+    if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
+      throw std::invalid_argument("the mesh has a non-finite vertex coordinate");
+    for (int i = 0; i < 3; ++i) {
+      t.lower[i] = std::min(t.lower[i], v[i]);
+      t.upper[i] = std::max(t.upper[i], v[i]);
+    }
+  }
+  t.reference = (t.lower + t.upper) / 2.0;
+  const auto n = t.vertices.size();
+  t.triangles.reserve(mesh.corners.size());
+  for (std::size_t f = 0; f < mesh.face_count(); ++f) {
+    const std::uint32_t* c = mesh.face(f);
+    const std::size_t k = mesh.face_size(f);
+    for (std::size_t i = 0; i < k; ++i)
+      if (c[i] >= n)
+        throw std::invalid_argument("face " + std::to_string(f) +
+                                    " has a vertex index out of range");
+    for (std::size_t i = 1; i + 1 < k; ++i) t.triangles.push_back({c[0], c[i], c[i + 1]});
+  }
+  for (const auto& tri : t.triangles)
+    add_triangle(t.total, t.vertices[tri[0]] - t.reference, t.vertices[tri[1]] - t.reference,
+                 t.vertices[tri[2]] - t.reference);
+  const BodyMoments m = body_moments(t.total);
+  t.volume = m.volume;
+  t.area = m.area;
+  t.gap_area = m.gap_area;
+  return t;
+}
+
+LevelRange level_range(const Tank& tank, Vec3d unit_up) {
+  LevelRange r{std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
+  for (const Vec3d& v : tank.vertices) {
+    const double h = dot(unit_up, v);
+    r.lowest = std::min(r.lowest, h);
+    r.highest = std::max(r.highest, h);
+  }
+  return r;
+}
+
+bool is_gaugeable(const Tank& tank, double relative_gap) {
+  return tank.volume > 0 && tank.gap_area <= relative_gap * tank.area;
+}
+
+}  // namespace pgamesh::tank
