@@ -54,6 +54,7 @@ void read_off(std::span<const char> bytes, const std::string& name, Mesh& mesh,
     if (c.word() == "BINARY") c.fail(bat, "binary OFF is not supported");
     c.p = bat;  // the counts may follow the keyword on its line
   }
+  skip_to_record(c);
   const char* nat = c.p;
   const std::uint64_t nv = off_count(c, "vertex count");
   const std::uint64_t nf = off_count(c, "face count");
