@@ -16,6 +16,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 
 #include "pgamesh/algebra/pga3.hpp"
 #include "pgamesh/algebra/vec3.hpp"
@@ -38,15 +39,12 @@ struct BoundarySums {
   BoundarySums& operator+=(const BoundarySums& o);
 };
 
-// Adds the triangle (a, b, c), coordinates relative to the reference point.
-inline void add_triangle(BoundarySums& s, Vec3d a, Vec3d b, Vec3d c) {
+// Adds the solid parts of the signed tetrahedron (o, a, b, c) — volume, first and second
+// moments, with D = o ∨ F = det(a, b, c) — and returns the carrier F = a ∨ b ∨ c. Coordinates are
+// relative to the reference point. The surface parts go through add_face_carrier.
+inline pga3::Plane<double> add_tetrahedron(BoundarySums& s, Vec3d a, Vec3d b, Vec3d c) {
   const pga3::Plane<double> f = triangle_carrier(a, b, c);
   const double d = origin_join(f);
-  s.area2 += pga3::norm(f);
-  s.carrier_sum.e0 += f.e0;
-  s.carrier_sum.e1 += f.e1;
-  s.carrier_sum.e2 += f.e2;
-  s.carrier_sum.e3 += f.e3;
   s.volume6 += d;
   const Vec3d sum = a + b + c;
   s.moment24 += d * sum;
@@ -56,6 +54,43 @@ inline void add_triangle(BoundarySums& s, Vec3d a, Vec3d b, Vec3d c) {
   s.second120[3] += d * (a.x * a.y + b.x * b.y + c.x * c.y + sum.x * sum.y);
   s.second120[4] += d * (a.y * a.z + b.y * b.z + c.y * c.z + sum.y * sum.z);
   s.second120[5] += d * (a.z * a.x + b.z * b.x + c.z * c.x + sum.z * sum.x);
+  return f;
+}
+
+// Adds the surface parts of one face with carrier f: its area ½‖f‖ (paper Table 1; for a
+// polygon, f is the sum of its fan carriers and ½‖f‖ the planar polygon area of §4c) and f itself
+// to Σ F, whose norm measures the gap (Cor. 4.1).
+inline void add_face_carrier(BoundarySums& s, const pga3::Plane<double>& f) {
+  s.area2 += pga3::norm(f);
+  s.carrier_sum.e0 += f.e0;
+  s.carrier_sum.e1 += f.e1;
+  s.carrier_sum.e2 += f.e2;
+  s.carrier_sum.e3 += f.e3;
+}
+
+// Adds the triangle (a, b, c), coordinates relative to the reference point.
+inline void add_triangle(BoundarySums& s, Vec3d a, Vec3d b, Vec3d c) {
+  add_face_carrier(s, add_tetrahedron(s, a, b, c));
+}
+
+// Adds the polygon v[0], …, v[n−1] (n ≥ 3, coordinates relative to the reference point) without
+// triangulating it: its carrier is the sum of its boundary-edge carriers joined with v[0]
+// (paper §4c), F = Σ_i (v_i ∨ v_{i+1}) ∨ v_0 = Σ_i v_0 ∨ v_i ∨ v_{i+1}, so the solid parts are
+// those of the fan of signed tetrahedra (o, v_0, v_i, v_{i+1}) and the area is ½‖F‖. For a planar
+// polygon, concave or not, every part is exact (the fan's negative triangles cancel what the
+// positive ones overcount). For a non-planar polygon the solid parts are those of the fan about
+// v_0 and the area is the norm of its vector area, i.e. the area of its projection onto its mean
+// plane (docs/mass-properties.md).
+inline void add_polygon(BoundarySums& s, const Vec3d* v, std::size_t n) {
+  pga3::Plane<double> f{};
+  for (std::size_t i = 1; i + 1 < n; ++i) {
+    const pga3::Plane<double> t = add_tetrahedron(s, v[0], v[i], v[i + 1]);
+    f.e0 += t.e0;
+    f.e1 += t.e1;
+    f.e2 += t.e2;
+    f.e3 += t.e3;
+  }
+  add_face_carrier(s, f);
 }
 
 // The moments of the solid at density 1, about the reference point.

@@ -1,0 +1,52 @@
+// Deterministic parallel accumulation of boundary sums. The faces are cut into chunks of a fixed
+// size (independent of the thread count); each chunk is summed on its own, in face order, and the
+// chunk sums are added in chunk order. The result is therefore the same bit for bit with 1, 2 or 64
+// threads (DESIGN.md §4: results do not depend on the thread count).
+#pragma once
+
+#include <algorithm>
+#include <atomic>
+#include <cstddef>
+#include <thread>
+#include <vector>
+
+#include "pgamesh/geometry/body_moments.hpp"
+
+namespace pgamesh {
+
+// Faces per chunk: large enough that a chunk costs far more than starting it, small enough that
+// two threads share a mesh of a few hundred thousand faces evenly.
+inline constexpr std::size_t faces_per_chunk = std::size_t{1} << 14;
+
+// The number of threads to use when the caller asks for 0 ("all"): the hardware concurrency.
+inline unsigned resolve_threads(unsigned requested) {
+  if (requested) return requested;
+  const unsigned hw = std::thread::hardware_concurrency();
+  return hw ? hw : 1;
+}
+
+// Σ over faces [0, count) of what add_range(sums, begin, end) accumulates for the faces
+// [begin, end), computed on up to `threads` threads (0 = all) with the fixed chunking above.
+// add_range must not throw.
+template <class AddRange>
+BoundarySums chunked_sums(std::size_t count, unsigned threads, const AddRange& add_range) {
+  const std::size_t chunks = (count + faces_per_chunk - 1) / faces_per_chunk;
+  std::vector<BoundarySums> partial(chunks);
+  std::atomic<std::size_t> next{0};
+  auto work = [&] {
+    for (std::size_t k; (k = next.fetch_add(1, std::memory_order_relaxed)) < chunks;) {
+      const std::size_t begin = k * faces_per_chunk;
+      add_range(partial[k], begin, std::min(count, begin + faces_per_chunk));
+    }
+  };
+  const std::size_t workers = std::min<std::size_t>(resolve_threads(threads), chunks);
+  std::vector<std::thread> pool;
+  for (std::size_t t = 1; t < workers; ++t) pool.emplace_back(work);
+  work();
+  for (auto& t : pool) t.join();
+  BoundarySums total;
+  for (const BoundarySums& p : partial) total += p;
+  return total;
+}
+
+}  // namespace pgamesh

@@ -1,0 +1,15 @@
+// The point about which a mesh's carriers are accumulated. PGA leaves the origin free, so sums are
+// formed from coordinates relative to a point near the mesh: that keeps every digit however far
+// the mesh lies from the coordinate origin (ERRATA §6). Mass properties, topology and fuel slicing
+// all take it from here.
+#pragma once
+
+#include "pgamesh/algebra/vec3.hpp"
+#include "pgamesh/mesh/mesh.hpp"
+
+namespace pgamesh {
+
+// The centre of the bounding box of the mesh's vertices (the origin for a mesh without vertices).
+Vec3d reference_point(const Mesh& mesh);
+
+}  // namespace pgamesh
