@@ -5,11 +5,15 @@
 // (eq. 2.2).
 //
 // Grade types, named as klein names them: Plane (grade 1), Line (grade 2), Point (grade 3),
-// Motor (even: scalar + bivector + pseudoscalar). The parts live in pga3/ (docs/pga3.md).
+// Motor (even: scalar + bivector + pseudoscalar), and the full 16-component Multivector. The parts
+// live in pga3/ (docs/pga3.md).
 #pragma once
 
+#include "pgamesh/algebra/pga3/convert.hpp"
 #include "pgamesh/algebra/pga3/grades.hpp"
 #include "pgamesh/algebra/pga3/join.hpp"
 #include "pgamesh/algebra/pga3/linear.hpp"
 #include "pgamesh/algebra/pga3/motor.hpp"
+#include "pgamesh/algebra/pga3/multivector.hpp"
 #include "pgamesh/algebra/pga3/norm.hpp"
+#include "pgamesh/algebra/pga3/products.hpp"

@@ -48,11 +48,12 @@ constexpr Plane<T> join(const Point<T>& a, const Point<T>& b, const Point<T>& c)
   return join(join(a, b), c);
 }
 
-/// L1 ∨ L2: a scalar, zero when the lines meet (coplanar); −(d1·m2 + d2·m1) in the Plücker
-/// coordinates of L1, L2 (the reciprocal product, sign from eq. 2.2).
+/// L1 ∨ L2: a scalar, zero when the lines meet (coplanar); l1·m2 + l2·m1 in the Plücker
+/// coordinates (the dual's ∧ with direction and moment swapped, eq. 2.2). For L1 = a ∨ b and
+/// L2 = c ∨ d it equals a ∨ b ∨ c ∨ d.
 template <class T>
 constexpr T join(const Line<T>& a, const Line<T>& b) {
-  return -(dot(a.direction(), b.moment()) + dot(b.direction(), a.moment()));
+  return dot(a.direction(), b.moment()) + dot(b.direction(), a.moment());
 }
 
 /// v0 ∨ v1 ∨ v2 ∨ v3 = det[v1 − v0, v2 − v0, v3 − v0] (paper eq. 3.14, ERRATA §0.1).
