@@ -1,6 +1,7 @@
 #include "pgamesh/mesh/mass_properties.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -105,7 +106,25 @@ MassProperties mass_properties_from_sums(const BoundarySums& sums, Vec3d referen
   return p;
 }
 
-MassProperties mass_properties(const Mesh& mesh, const MassOptions& options) {
+std::optional<std::string> float32_precision_warning(const Box3& box) {
+  if (box.empty()) return std::nullopt;
+  const double far = box.max_abs(), size = box.diagonal();
+  // Spacing of float32 numbers at `far`: 2^(exponent − 23).
+  int exponent = 0;
+  std::frexp(static_cast<float>(far), &exponent);
+  const double spacing = std::ldexp(1.0, exponent - 24);
+  if (!(spacing > 1e-6 * size)) return std::nullopt;
+  char buf[320];
+  std::snprintf(buf, sizeof buf,
+                "float32 coordinates reach %.3g from the origin, where their spacing is %.3g = "
+                "%.2g of the part size %.3g: the input carries relative errors of that order; "
+                "move the part near the origin before exporting for full precision",
+                far, spacing, spacing / size, size);
+  return std::string(buf);
+}
+
+MassProperties mass_properties(const Mesh& mesh, const MassOptions& options,
+                               const MeshSource* source) {
   const Vec3d ref = reference_point(mesh);
   MassProperties p =
       mass_properties_from_sums(mesh_boundary_sums(mesh, ref, options.threads), ref, options);
@@ -113,6 +132,8 @@ MassProperties mass_properties(const Mesh& mesh, const MassOptions& options) {
   p.vertices = mesh.vertices.size();
   for (std::size_t f = 0; f < mesh.face_count(); ++f)
     if (mesh.face_size(f) >= 3) p.triangles += mesh.face_size(f) - 2;
+  if (source && source->single_precision)
+    if (auto w = float32_precision_warning(bounding_box(mesh.vertices))) p.warnings.push_back(*w);
   return p;
 }
 

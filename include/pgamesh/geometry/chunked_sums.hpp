@@ -25,13 +25,13 @@ inline unsigned resolve_threads(unsigned requested) {
   return hw ? hw : 1;
 }
 
-// Σ over faces [0, count) of what add_range(sums, begin, end) accumulates for the faces
+// Σ over faces [0, count) of what add_range(partial, begin, end) accumulates for the faces
 // [begin, end), computed on up to `threads` threads (0 = all) with the fixed chunking above.
-// add_range must not throw.
-template <class AddRange>
-BoundarySums chunked_sums(std::size_t count, unsigned threads, const AddRange& add_range) {
+// Partial is BoundarySums or any value-initialisable type with +=. add_range must not throw.
+template <class Partial = BoundarySums, class AddRange>
+Partial chunked_sums(std::size_t count, unsigned threads, const AddRange& add_range) {
   const std::size_t chunks = (count + faces_per_chunk - 1) / faces_per_chunk;
-  std::vector<BoundarySums> partial(chunks);
+  std::vector<Partial> partial(chunks);
   std::atomic<std::size_t> next{0};
   auto work = [&] {
     for (std::size_t k; (k = next.fetch_add(1, std::memory_order_relaxed)) < chunks;) {
@@ -44,8 +44,8 @@ BoundarySums chunked_sums(std::size_t count, unsigned threads, const AddRange& a
   for (std::size_t t = 1; t < workers; ++t) pool.emplace_back(work);
   work();
   for (auto& t : pool) t.join();
-  BoundarySums total;
-  for (const BoundarySums& p : partial) total += p;
+  Partial total{};
+  for (const Partial& p : partial) total += p;
   return total;
 }
 

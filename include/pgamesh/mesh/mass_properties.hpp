@@ -19,6 +19,7 @@
 #include "pgamesh/algebra/pga3.hpp"
 #include "pgamesh/algebra/vec3.hpp"
 #include "pgamesh/geometry/body_moments.hpp"
+#include "pgamesh/geometry/bounding_box.hpp"
 #include "pgamesh/geometry/inertia_frame.hpp"
 #include "pgamesh/mesh/mesh.hpp"
 
@@ -74,8 +75,16 @@ BoundarySums mesh_boundary_sums(const Mesh& mesh, Vec3d reference, unsigned thre
 MassProperties mass_properties_from_sums(const BoundarySums& sums, Vec3d reference,
                                          const MassOptions& options);
 
-// Mass properties of a mesh, accumulated about reference_point(mesh).
-MassProperties mass_properties(const Mesh& mesh, const MassOptions& options = {});
+// Mass properties of a mesh, accumulated about reference_point(mesh). When `source` says the
+// coordinates were float32, adds float32_precision_warning's warning.
+MassProperties mass_properties(const Mesh& mesh, const MassOptions& options = {},
+                               const MeshSource* source = nullptr);
+
+// When float32 coordinates (binary STL, float PLY) spanning `box` are spaced more coarsely, at the
+// farthest coordinate from the origin, than 1e-6 of the part's size (its bounding-box diagonal),
+// a warning saying so: the input itself then carries relative errors of that order, whatever the
+// accumulation does. nullopt otherwise.
+std::optional<std::string> float32_precision_warning(const Box3& box);
 
 // The products of inertia of an inertia tensor.
 ProductsOfInertia products_of_inertia(const Mat3& inertia);

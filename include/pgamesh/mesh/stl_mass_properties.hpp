@@ -1,0 +1,26 @@
+// The fused fast path for binary STL: mass properties accumulated straight from the mapped
+// float32 records on every core, without building a Mesh (DESIGN.md §6: parse and accumulate in one
+// streaming pass). No topology: an STL has no shared vertices until they are welded, so
+// closedness needs the weld of mesh/topology.
+#pragma once
+
+#include <string>
+
+#include "pgamesh/geometry/bounding_box.hpp"
+#include "pgamesh/mesh/mass_properties.hpp"
+#include "pgamesh/mesh/stl_binary.hpp"
+
+namespace pgamesh {
+
+// Records sampled to place the reference point: the bounding-box centre of at most this many
+// evenly spaced triangles (deterministic, and near the mesh whatever its size).
+inline constexpr std::uint64_t stl_reference_samples = 4096;
+
+// Mass properties of the triangles of a binary STL view, accumulated about the centre of a sample
+// of its records. Fills faces = triangles = view.count and vertices = 3 × count (STL vertices are
+// not shared). Adds the float32 far-from-origin warning when it applies. Throws InputError naming
+// `name` and the byte offset of the first non-finite coordinate when there is one.
+MassProperties binary_stl_mass_properties(const BinaryStlView& view, const std::string& name,
+                                          const MassOptions& options = {});
+
+}  // namespace pgamesh

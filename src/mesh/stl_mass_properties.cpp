@@ -1,0 +1,66 @@
+#include "pgamesh/mesh/stl_mass_properties.hpp"
+
+#include <cmath>
+
+#include "pgamesh/geometry/chunked_sums.hpp"
+
+namespace pgamesh {
+
+namespace {
+
+struct StlPartial {
+  BoundarySums sums;
+  Box3 box;
+  StlPartial& operator+=(const StlPartial& o) {
+    sums += o.sums;
+    box.add(o.box);
+    return *this;
+  }
+};
+
+Vec3d sampled_reference(const BinaryStlView& view) {
+  Box3 box;
+  const std::uint64_t step = std::max<std::uint64_t>(1, view.count / stl_reference_samples);
+  for (std::uint64_t i = 0; i < view.count; i += step) {
+    Vec3d v[3];
+    stl_triangle(view.records + stl_record_bytes * i, v);
+    for (const Vec3d& p : v)
+      if (std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z)) box.add(p);
+  }
+  return box.centre();
+}
+
+bool finite(const BoundarySums& s) {
+  return std::isfinite(s.area2) && std::isfinite(s.volume6) && std::isfinite(s.moment24.x) &&
+         std::isfinite(s.moment24.y) && std::isfinite(s.moment24.z) &&
+         std::isfinite(s.second120[0]) && std::isfinite(s.second120[1]) &&
+         std::isfinite(s.second120[2]);
+}
+
+}  // namespace
+
+MassProperties binary_stl_mass_properties(const BinaryStlView& view, const std::string& name,
+                                          const MassOptions& options) {
+  const Vec3d ref = sampled_reference(view);
+  const StlPartial total = chunked_sums<StlPartial>(
+      view.count, options.threads, [&](StlPartial& p, std::size_t begin, std::size_t end) {
+        const unsigned char* r = view.records + stl_record_bytes * begin;
+        for (std::size_t i = begin; i < end; ++i, r += stl_record_bytes) {
+          Vec3d v[3];
+          stl_triangle(r, v);
+          p.box.add(v[0]);
+          p.box.add(v[1]);
+          p.box.add(v[2]);
+          add_triangle(p.sums, v[0] - ref, v[1] - ref, v[2] - ref);
+        }
+      });
+  // A NaN or infinity anywhere poisons the sums: name the first culprit (throws).
+  if (!finite(total.sums)) check_binary_stl_finite(view, name);
+  MassProperties p = mass_properties_from_sums(total.sums, ref, options);
+  p.faces = p.triangles = view.count;
+  p.vertices = 3 * view.count;
+  if (auto w = float32_precision_warning(total.box)) p.warnings.push_back(*w);
+  return p;
+}
+
+}  // namespace pgamesh

@@ -1,0 +1,115 @@
+// The streamed binary STL path: same figures as reading the mesh first, thread-count independent,
+// errors with byte offsets for non-finite coordinates, the float32 far-from-origin warning.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "pgamesh/input_error.hpp"
+#include "pgamesh/mesh/mapped_file.hpp"
+#include "pgamesh/mesh/read_mesh.hpp"
+#include "pgamesh/mesh/stl_mass_properties.hpp"
+#include "support/golden.hpp"
+#include "support/solids.hpp"
+#include "support/stl_bytes.hpp"
+
+using namespace pgamesh;
+using namespace pgamesh::test;
+
+namespace {
+
+MassProperties streamed(const std::vector<char>& bytes, unsigned threads = 0) {
+  const auto view = binary_stl_view(bytes, "test.stl");
+  EXPECT_TRUE(view.has_value());
+  MassOptions opt;
+  opt.threads = threads;
+  return binary_stl_mass_properties(*view, "test.stl", opt);
+}
+
+}  // namespace
+
+TEST(MassStl, StreamedEqualsReadMesh) {
+  // Fewer triangles than the reference sample: both paths accumulate about the same point in the
+  // same order, so they agree to the last bit.
+  const Mesh m = uv_sphere(2, 10, 16);
+  const std::vector<char> bytes = binary_stl_bytes(m);
+  const MassProperties s = streamed(bytes);
+  MeshSource source;
+  const Mesh read = read_mesh_bytes(bytes, "test.stl", &source);
+  const MassProperties r = mass_properties(read, {}, &source);
+  EXPECT_EQ(s.triangles, r.triangles);
+  EXPECT_EQ(s.vertices, r.vertices);
+  EXPECT_EQ(s.volume, r.volume);
+  EXPECT_EQ(s.area, r.area);
+  EXPECT_EQ(s.center_of_mass, r.center_of_mass);
+  EXPECT_EQ(s.inertia_com, r.inertia_com);
+  EXPECT_GT(s.volume, 0);
+}
+
+TEST(MassStl, LargeStreamIsThreadIndependentAndMatchesMesh) {
+  const Mesh m = uv_sphere(1, 120, 240);  // 57k triangles: many chunks, sampled reference point
+  const std::vector<char> bytes = binary_stl_bytes(m);
+  const MassProperties a = streamed(bytes, 1), b = streamed(bytes, 2), c = streamed(bytes, 5);
+  EXPECT_EQ(a.volume, b.volume);
+  EXPECT_EQ(a.volume, c.volume);
+  EXPECT_EQ(a.inertia_com, b.inertia_com);
+  EXPECT_EQ(a.inertia_com, c.inertia_com);
+  MeshSource source;
+  const MassProperties r = mass_properties(read_mesh_bytes(bytes, "t.stl", &source), {}, &source);
+  EXPECT_NEAR(a.volume, r.volume, 1e-14 * r.volume);
+  EXPECT_NEAR(a.inertia_com[0][0], r.inertia_com[0][0], 1e-14 * r.inertia_com[0][0]);
+  EXPECT_NEAR(length(a.center_of_mass - r.center_of_mass), 0, 1e-15);
+}
+
+TEST(MassStl, NonFiniteCoordinateNamesItsByte) {
+  std::vector<char> bytes = binary_stl_bytes(box_mesh(1, 2, 3));
+  // Triangle 5 (0-based 4), vertex 2, y: byte 84 + 50·4 + 12 + 12 + 4.
+  const std::size_t offset = 84 + 50 * 4 + 12 + 12 + 4;
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  std::memcpy(bytes.data() + offset, &nan, 4);
+  const auto view = binary_stl_view(bytes, "nan.stl");
+  ASSERT_TRUE(view);
+  try {
+    binary_stl_mass_properties(*view, "nan.stl");
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where().byte_offset, offset);
+    EXPECT_NE(std::string(e.what()).find("nan.stl"), std::string::npos);
+  }
+}
+
+TEST(MassStl, FarFromOriginFloat32Warns) {
+  const Mesh near = box_mesh(1, 1, 1);
+  EXPECT_TRUE(streamed(binary_stl_bytes(near)).warnings.empty());
+  // At 1e4 float32 spacing is ~1e-3, 1e-3 of the part size: warned.
+  const Mesh far = transformed(near, [](Vec3d v) { return v + Vec3d{1e4, 0, 0}; });
+  const MassProperties p = streamed(binary_stl_bytes(far));
+  ASSERT_EQ(p.warnings.size(), 1u);
+  EXPECT_NE(p.warnings[0].find("float32"), std::string::npos);
+  // The same box is still measured exactly: its coordinates are representable.
+  EXPECT_DOUBLE_EQ(p.volume, 1);
+  EXPECT_DOUBLE_EQ(p.center_of_mass.x, 1e4 + 0.5);
+}
+
+TEST(MassStl, IrregularTetrahedronHasVolumeOne) {
+  const std::string dir = shared_meshes_dir();
+  if (dir.empty()) GTEST_SKIP() << "../shared/meshes not found";
+  const MappedFile file = MappedFile::open(dir + "/stl-models/tetrahedronIrregular.bin.stl");
+  const auto view = binary_stl_view(file.bytes(), "tetrahedronIrregular.bin.stl");
+  ASSERT_TRUE(view);
+  const MassProperties p = binary_stl_mass_properties(*view, "tetrahedronIrregular.bin.stl");
+  // The tetrahedron (0,0,0), (3,0,0), (0,2,0), (0,0,1): V = 1, c = (3/4, 1/2, 1/4),
+  // about the origin ∫x² = a³bc/60 = 27·2/60, ∫xy = a²b²c/120 = 36/120, ...
+  EXPECT_DOUBLE_EQ(p.volume, 1);
+  EXPECT_DOUBLE_EQ(p.center_of_mass.x, 0.75);
+  EXPECT_DOUBLE_EQ(p.center_of_mass.y, 0.5);
+  EXPECT_DOUBLE_EQ(p.center_of_mass.z, 0.25);
+  const double xx = 27.0 * 2 / 60, yy = 3 * 8.0 / 60, zz = 3 * 2.0 / 60;
+  const double xy = 9 * 4.0 / 120, yz = 3 * 4.0 / 120, zx = 9 * 2.0 / 120;
+  EXPECT_NEAR(p.inertia_origin[0][0], yy + zz, 1e-15);
+  EXPECT_NEAR(p.inertia_origin[1][1], xx + zz, 1e-15);
+  EXPECT_NEAR(p.inertia_origin[2][2], xx + yy, 1e-15);
+  EXPECT_NEAR(p.inertia_origin[0][1], -xy, 1e-15);
+  EXPECT_NEAR(p.inertia_origin[1][2], -yz, 1e-15);
+  EXPECT_NEAR(p.inertia_origin[0][2], -zx, 1e-15);
+}

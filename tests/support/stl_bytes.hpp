@@ -1,0 +1,43 @@
+// Binary STL bytes of a triangle mesh built in memory (float32 coordinates, normals left zero),
+// for tests of the streamed STL path.
+#pragma once
+
+#include <cstdint>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "pgamesh/mesh/mesh.hpp"
+
+namespace pgamesh::test {
+
+// The binary STL of the mesh's faces, fanned about their first corner.
+inline std::vector<char> binary_stl_bytes(const Mesh& m) {
+  std::vector<char> out(80, ' ');
+  std::uint32_t count = 0;
+  for (std::size_t f = 0; f < m.face_count(); ++f)
+    if (m.face_size(f) >= 3) count += static_cast<std::uint32_t>(m.face_size(f) - 2);
+  for (int k = 0; k < 4; ++k) out.push_back(static_cast<char>((count >> (8 * k)) & 0xff));
+  const auto put = [&](float v) {
+    char b[4];
+    std::memcpy(b, &v, 4);  // the test machines are little-endian, as STL is
+    out.insert(out.end(), b, b + 4);
+  };
+  for (std::size_t f = 0; f < m.face_count(); ++f) {
+    const std::uint32_t* c = m.face(f);
+    for (std::size_t k = 1; k + 1 < m.face_size(f); ++k) {
+      for (int i = 0; i < 3; ++i) put(0.0f);
+      for (const std::uint32_t idx : {c[0], c[k], c[k + 1]}) {
+        const Vec3d& v = m.vertices[idx];
+        put(static_cast<float>(v.x));
+        put(static_cast<float>(v.y));
+        put(static_cast<float>(v.z));
+      }
+      out.push_back(0);
+      out.push_back(0);
+    }
+  }
+  return out;
+}
+
+}  // namespace pgamesh::test
