@@ -9,6 +9,9 @@ case "$what" in
   test) pkgs+=(clang libclang-rt-14-dev clang-format chromium) ;;
   bench) pkgs+=(admesh hyperfine libcgal-dev python3-vtk9 python3-stl python3-open3d python3-numpy time) ;;
 esac
+# The viewer's page needs node and npm (for three.js and, in tests, playwright-core): Debian's
+# only when the machine has none of its own.
+command -v npm > /dev/null || pkgs+=(nodejs npm)
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -18,4 +21,15 @@ if [ ${#missing[@]} -gt 0 ]; then
   SUDO=""; [ "$(id -u)" -ne 0 ] && SUDO=sudo
   $SUDO apt-get update -qq
   DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+
+# The viewer's npm packages (three.js served by `pgamesh serve`; playwright-core drives the browser
+# tests), exactly as locked. Skipped when node_modules already matches the lock file.
+web=apps/viewer/web
+stamp="$web/node_modules/.pgamesh-lock.sha256"
+lock_sum=$(sha256sum "$web/package-lock.json" | cut -d' ' -f1)
+if [ ! -f "$stamp" ] || [ "$(cat "$stamp")" != "$lock_sum" ]; then
+  echo "setup: npm ci in $web"
+  (cd "$web" && npm ci --no-audit --no-fund --loglevel=error)
+  echo "$lock_sum" > "$stamp"
 fi

@@ -1,0 +1,260 @@
+#include "server.hpp"
+
+#include <httplib.h>
+#include <pthread.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+#include <new>
+#include <regex>
+#include <thread>
+
+#include "assets.hpp"
+#include "mesh_store.hpp"
+#include "mesh_view.hpp"
+#include "pgamesh/input_error.hpp"
+
+namespace pgamesh::viewer {
+
+namespace {
+
+using nlohmann::json;
+
+constexpr std::size_t kWorkerThreads = 32;
+
+void send_json(httplib::Response& res, int status, const json& body) {
+  res.status = status;
+  res.set_header("Cache-Control", "no-store");
+  // With a charset, httplib does not brotli-compress it (slow at its default quality, and
+  // pointless on loopback).
+  res.set_content(body.dump(), "application/json; charset=utf-8");
+}
+
+void send_error(httplib::Response& res, int status, const std::string& message) {
+  send_json(res, status, {{"error", message}});
+}
+
+// What a path may be asked with: "GET" (HEAD included), "POST", or nothing (unknown path).
+const std::regex kMeshRoute(R"(/api/mesh/([fu][0-9]{1,18}))");
+const std::regex kMeshGeometryRoute(R"(/api/mesh/([fu][0-9]{1,18})/geometry)");
+
+std::string allowed_method(const AssetTable& assets, const std::string& path) {
+  if (assets.by_url.count(path) || path == "/api/info" || path == "/api/meshes" ||
+      std::regex_match(path, kMeshRoute) || std::regex_match(path, kMeshGeometryRoute))
+    return "GET";
+  if (path == "/api/upload") return "POST";
+  return {};
+}
+
+bool has_mesh_extension(const std::filesystem::path& p) {
+  std::string ext = p.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) {
+    return static_cast<char>(std::tolower(c));
+  });
+  return ext == ".stl" || ext == ".obj" || ext == ".ply" || ext == ".off";
+}
+
+// The bundled meshes: every mesh file directly in the folder, sorted by name.
+std::vector<std::filesystem::path> bundled_meshes(const std::string& dir) {
+  std::vector<std::filesystem::path> out;
+  std::error_code ec;
+  if (dir.empty() || !std::filesystem::is_directory(dir, ec)) return out;
+  for (const auto& e : std::filesystem::directory_iterator(dir, ec))
+    if (e.is_regular_file(ec) && has_mesh_extension(e.path())) out.push_back(e.path());
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+// The name an upload is shown and reported under: the last path component the page sent, bounded.
+std::string upload_name(const httplib::Request& req) {
+  std::string name = req.has_param("name") ? req.get_param_value("name") : "";
+  const auto slash = name.find_last_of("/\\");
+  if (slash != std::string::npos) name.erase(0, slash + 1);
+  name.erase(std::remove_if(name.begin(), name.end(),
+                            [](unsigned char c) { return c < 0x20 || c == 0x7f; }),
+             name.end());
+  if (name.size() > 120) name.resize(120);
+  return name.empty() ? "upload" : name;
+}
+
+// Looks up the mesh of a route, answering 404/422 itself when there is none.
+std::shared_ptr<const StoredMesh> find_mesh(MeshStore& store, const std::string& id,
+                                            httplib::Response& res) {
+  try {
+    auto stored = store.get(id);
+    if (!stored) send_error(res, 404, "no mesh with id '" + id + "' (uploads are kept " +
+                                          "only for the most recent few)");
+    return stored;
+  } catch (const InputError& e) {
+    send_error(res, 422, e.what());
+    return nullptr;
+  }
+}
+
+void add_routes(httplib::Server& svr, const ServerOptions& options, const AssetTable& assets,
+                MeshStore& store) {
+  svr.set_pre_routing_handler([&assets](const httplib::Request& req, httplib::Response& res) {
+    const std::string allowed = allowed_method(assets, req.path);
+    if (allowed.empty()) {
+      send_error(res, 404, "not found: " + req.path);
+      return httplib::Server::HandlerResponse::Handled;
+    }
+    const bool ok = allowed == "GET" ? (req.method == "GET" || req.method == "HEAD")
+                                     : req.method == allowed;
+    if (!ok) {
+      res.set_header("Allow", allowed == "GET" ? "GET, HEAD" : allowed);
+      send_error(res, 405, "method " + req.method + " not allowed on " + req.path);
+      return httplib::Server::HandlerResponse::Handled;
+    }
+    return httplib::Server::HandlerResponse::Unhandled;
+  });
+
+  for (const auto& [url, asset] : assets.by_url) {
+    svr.Get(std::regex_replace(url, std::regex(R"([.^$|()\[\]{}*+?\\])"), R"(\$&)"),
+            [&asset = asset](const httplib::Request&, httplib::Response& res) {
+              res.set_content(asset.body, asset.content_type);
+            });
+  }
+
+  svr.Get("/api/info", [&options](const httplib::Request&, httplib::Response& res) {
+    send_json(res, 200,
+              {{"version", PGAMESH_VERSION},
+               {"max_upload", options.max_upload},
+               {"features", {{"props", false}, {"check", false}, {"fuel", false}}}});
+  });
+
+  svr.Get("/api/meshes", [&store](const httplib::Request&, httplib::Response& res) {
+    json list = json::array();
+    for (const FileEntry& f : store.files())
+      list.push_back({{"id", f.id}, {"name", f.name}, {"origin", f.origin}});
+    send_json(res, 200, {{"meshes", list}});
+  });
+
+  svr.Get(R"(/api/mesh/([fu][0-9]{1,18}))",
+          [&store](const httplib::Request& req, httplib::Response& res) {
+            if (auto m = find_mesh(store, req.matches[1], res))
+              send_json(res, 200, mesh_summary_json(*m));
+          });
+
+  svr.Get(R"(/api/mesh/([fu][0-9]{1,18})/geometry)",
+          [&store](const httplib::Request& req, httplib::Response& res) {
+            if (auto m = find_mesh(store, req.matches[1], res)) {
+              res.set_header("Cache-Control", "no-store");
+              res.set_content(mesh_geometry_binary(m->mesh), "application/octet-stream");
+            }
+          });
+
+  svr.Post("/api/upload", [&store](const httplib::Request& req, httplib::Response& res) {
+    const std::string name = upload_name(req);
+    if (req.body.empty()) return send_error(res, 400, name + ": the upload is empty");
+    try {
+      const auto m = store.add_upload(name, {req.body.data(), req.body.size()});
+      send_json(res, 201, mesh_summary_json(*m));
+    } catch (const InputError& e) {
+      send_error(res, 400, e.what());
+    }
+  });
+
+  // Errors raised by httplib itself (oversized body 413, malformed request 400, ...) get a JSON body.
+  svr.set_error_handler([&options](const httplib::Request&, httplib::Response& res) {
+    if (!res.body.empty()) return;
+    if (res.status == 413)
+      send_error(res, 413,
+                 "the request is larger than the upload limit of " +
+                     std::to_string(options.max_upload) + " bytes (pgamesh serve --max-upload)");
+    else
+      send_error(res, res.status, std::string("HTTP ") + std::to_string(res.status));
+  });
+
+  svr.set_exception_handler(
+      [](const httplib::Request&, httplib::Response& res, std::exception_ptr ep) {
+        try {
+          std::rethrow_exception(ep);
+        } catch (const std::bad_alloc&) {
+          send_error(res, 500, "out of memory while handling the request");
+        } catch (const std::exception& e) {
+          send_error(res, 500, std::string("internal error: ") + e.what());
+        } catch (...) {
+          send_error(res, 500, "internal error");
+        }
+      });
+
+  if (options.log_requests)
+    svr.set_logger([](const httplib::Request& req, const httplib::Response& res) {
+      std::fprintf(stderr, "pgamesh serve: %s %s -> %d\n", req.method.c_str(), req.path.c_str(),
+                   res.status);
+    });
+}
+
+}  // namespace
+
+int run_server(const ServerOptions& options) {
+  const AssetTable assets = load_assets(options.web_dir);
+  for (const std::string& m : assets.missing)
+    std::fprintf(stderr, "pgamesh serve: warning: %s is missing (run scripts/setup.sh)\n",
+                 m.c_str());
+
+  MeshStore store(options.max_kept_uploads);
+  for (const std::string& f : options.files)
+    store.add_file(f, std::filesystem::path(f).filename().string(), "command line");
+  for (const auto& p : bundled_meshes(options.bundled_dir))
+    store.add_file(p.string(), p.filename().string(), "bundled");
+
+  // SIGINT/SIGTERM are taken by one waiting thread (blocked everywhere else, the server's worker
+  // threads inherit the mask), which stops the server so it shuts down cleanly.
+  sigset_t stop_signals;
+  sigemptyset(&stop_signals);
+  sigaddset(&stop_signals, SIGINT);
+  sigaddset(&stop_signals, SIGTERM);
+  pthread_sigmask(SIG_BLOCK, &stop_signals, nullptr);
+
+  httplib::Server svr;
+  svr.set_payload_max_length(options.max_upload);
+  // Not httplib's default SO_REUSEPORT: a second server on a busy port must fail, not share it.
+  svr.set_socket_options([](socket_t sock) {
+    int yes = 1;
+    setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
+  });
+  // httplib gives each connection a worker thread while it is open, idle keep-alive included:
+  // enough workers for a few browser tabs (6 connections each) and short idle keep-alives.
+  svr.new_task_queue = [] { return new httplib::ThreadPool(kWorkerThreads); };
+  svr.set_keep_alive_timeout(2);
+  svr.set_default_headers({{"X-Content-Type-Options", "nosniff"}});
+  add_routes(svr, options, assets, store);
+
+  const int port = options.port == 0 ? svr.bind_to_any_port(options.host)
+                                     : (svr.bind_to_port(options.host, options.port) ? options.port
+                                                                                    : -1);
+  if (port < 0) {
+    std::fprintf(stderr, "pgamesh serve: cannot listen on %s:%d (in use, or not a local address)\n",
+                 options.host.c_str(), options.port);
+    return 1;
+  }
+  const bool ipv6 = options.host.find(':') != std::string::npos;
+  std::printf("pgamesh serve: listening on http://%s%s%s:%d/\n", ipv6 ? "[" : "",
+              options.host.c_str(), ipv6 ? "]" : "", port);
+  std::fflush(stdout);
+
+  std::atomic<bool> signalled{false}, listen_over{false};
+  std::thread stopper([&svr, &signalled, &listen_over, stop_signals] {
+    int signal = 0;
+    sigwait(&stop_signals, &signal);
+    signalled = true;
+    // httplib's stop() acts only once the accept loop runs: a signal right after the bind waits.
+    while (!svr.is_running() && !listen_over)
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    svr.stop();
+  });
+  svr.listen_after_bind();
+  listen_over = true;
+  if (!signalled) pthread_kill(stopper.native_handle(), SIGTERM);  // wake the waiter to end it
+  stopper.join();
+  std::fprintf(stderr, "pgamesh serve: stopped\n");
+  return 0;
+}
+
+}  // namespace pgamesh::viewer

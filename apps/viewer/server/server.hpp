@@ -1,0 +1,27 @@
+// `pgamesh serve`: a local HTTP server for the viewer page and its JSON API, backed by the library
+// in-process. Routes, limits and behaviour on bad requests are described in docs/viewer.md.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace pgamesh::viewer {
+
+struct ServerOptions {
+  std::string host = "127.0.0.1";  // loopback unless the user asks otherwise (DESIGN.md §7)
+  int port = 8080;                 // 0: any free port (the URL printed says which)
+  std::size_t max_upload = std::size_t{64} << 20;  // bytes; bigger request bodies get 413
+  std::size_t max_kept_uploads = 8;                // uploads kept in memory, oldest dropped first
+  std::string web_dir;                             // folder of index.html and node_modules/three
+  std::string bundled_dir;                         // folder of the bundled meshes (data/meshes)
+  std::vector<std::string> files;                  // meshes named on the command line
+  bool log_requests = true;                        // one line per request on stderr
+};
+
+/// Serves until SIGINT or SIGTERM. Prints "pgamesh serve: listening on http://HOST:PORT/" on stdout
+/// once the socket is bound. Returns the process exit status (0 after a signal, 1 when the address
+/// cannot be bound).
+int run_server(const ServerOptions& options);
+
+}  // namespace pgamesh::viewer

@@ -1,0 +1,47 @@
+// The server's JSON API (docs/viewer.md). Every call resolves to parsed JSON or throws an Error
+// whose message is the server's own explanation.
+
+async function parse(response) {
+  const type = response.headers.get('Content-Type') || '';
+  const body = type.startsWith('application/json') ? await response.json() : null;
+  if (!response.ok) {
+    const why = body && body.error ? body.error : `HTTP ${response.status}`;
+    throw new Error(why);
+  }
+  return body;
+}
+
+export async function getInfo() {
+  return parse(await fetch('/api/info'));
+}
+
+export async function listMeshes() {
+  return (await parse(await fetch('/api/meshes'))).meshes;
+}
+
+export async function getMesh(id) {
+  return parse(await fetch(`/api/mesh/${encodeURIComponent(id)}`));
+}
+
+// The triangles to draw: positions relative to the summary's drawing_origin, and indices.
+export async function getGeometry(id) {
+  const response = await fetch(`/api/mesh/${encodeURIComponent(id)}/geometry`);
+  if (!response.ok) await parse(response);
+  const buffer = await response.arrayBuffer();
+  const head = new DataView(buffer, 0, 8);
+  const vertexCount = head.getUint32(0, true);
+  const triangleCount = head.getUint32(4, true);
+  const positions = new Float32Array(buffer, 8, 3 * vertexCount);
+  const indices = new Uint32Array(buffer, 8 + 12 * vertexCount, 3 * triangleCount);
+  return { positions, indices };
+}
+
+// Sends a file's bytes as they are; the server detects the format from the content.
+export async function upload(file) {
+  const response = await fetch(`/api/upload?name=${encodeURIComponent(file.name)}`, {
+    method: 'POST',
+    headers: { 'Content-Type': 'application/octet-stream' },
+    body: file,
+  });
+  return parse(response);
+}

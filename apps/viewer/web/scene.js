@@ -1,0 +1,149 @@
+// The 3-D view: one mesh, markers (points) and arrows, orbit controls. Z is up. Everything is drawn
+// relative to the mesh's drawing origin (the server sends float32 positions relative to it).
+import * as THREE from 'three';
+import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
+
+export class View {
+  constructor(container) {
+    this.container = container;
+    this.renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
+    this.renderer.setPixelRatio(window.devicePixelRatio);
+    this.renderer.setClearColor(0xf3f5f9);
+    container.appendChild(this.renderer.domElement);
+
+    this.scene = new THREE.Scene();
+    this.camera = new THREE.PerspectiveCamera(40, 1, 0.01, 1000);
+    this.camera.up.set(0, 0, 1);
+    this.camera.position.set(3, -4, 2.5);
+    this.controls = new OrbitControls(this.camera, this.renderer.domElement);
+    this.controls.addEventListener('change', () => this.render());
+
+    this.scene.add(new THREE.HemisphereLight(0xffffff, 0x667788, 2.2));
+    const sun = new THREE.DirectionalLight(0xffffff, 1.5);
+    sun.position.set(2, -3, 5);
+    this.camera.add(sun);
+    this.scene.add(this.camera);
+
+    this.origin = new THREE.Vector3();  // the drawing origin, in model coordinates
+    this.size = 1;
+    this.groups = {};  // named layers that can be replaced: 'mesh', 'com', 'axes', ...
+
+    new ResizeObserver(() => this.resize()).observe(container);
+    this.resize();
+  }
+
+  resize() {
+    const w = Math.max(1, this.container.clientWidth);
+    const h = Math.max(1, this.container.clientHeight);
+    this.renderer.setSize(w, h, false);
+    this.camera.aspect = w / h;
+    this.camera.updateProjectionMatrix();
+    this.render();
+  }
+
+  render() {
+    this.renderer.render(this.scene, this.camera);
+  }
+
+  // Replaces the named layer (removing it when object is null) and redraws.
+  setLayer(name, object) {
+    const old = this.groups[name];
+    if (old) {
+      this.scene.remove(old);
+      old.traverse((o) => {
+        if (o.geometry) o.geometry.dispose();
+        if (o.material) o.material.dispose();
+      });
+    }
+    this.groups[name] = object;
+    if (object) this.scene.add(object);
+    this.render();
+  }
+
+  // Model coordinates [x,y,z] -> the scene's (relative to the drawing origin).
+  toScene(p) {
+    return new THREE.Vector3(p[0], p[1], p[2]).sub(this.origin);
+  }
+
+  // Shows a new mesh; clears every other layer and frames the camera on it.
+  showMesh(summary, geometry) {
+    for (const name of Object.keys(this.groups)) this.setLayer(name, null);
+    this.origin.fromArray(summary.drawing_origin);
+    const g = new THREE.BufferGeometry();
+    g.setAttribute('position', new THREE.BufferAttribute(geometry.positions, 3));
+    g.setIndex(new THREE.BufferAttribute(geometry.indices, 1));
+    g.computeVertexNormals();
+    const group = new THREE.Group();
+    group.add(new THREE.Mesh(g, new THREE.MeshStandardMaterial({
+      color: 0x8fa6c8, metalness: 0.1, roughness: 0.7, side: THREE.FrontSide,
+      transparent: true, opacity: 0.55, depthWrite: false })));
+    // Back faces in another colour show inside-out or open parts.
+    group.add(new THREE.Mesh(g, new THREE.MeshStandardMaterial({
+      color: 0xc98f6b, side: THREE.BackSide, transparent: true, opacity: 0.35,
+      depthWrite: false })));
+    this.setLayer('mesh', group);
+
+    const lo = this.toScene(summary.bounds.min), hi = this.toScene(summary.bounds.max);
+    this.size = Math.max(hi.clone().sub(lo).length(), 1e-9);
+    const grid = new THREE.GridHelper(this.size * 1.5, 10, 0x9aa5b8, 0xd0d6e0);
+    grid.rotation.x = Math.PI / 2;  // the grid lies in the xy plane (z up)
+    grid.position.z = lo.z;
+    this.setLayer('grid', grid);
+    const axes = new THREE.AxesHelper(this.size * 0.25);
+    axes.position.copy(this.toScene([0, 0, 0]));
+    this.setLayer('world-axes', axes);
+
+    this.camera.near = this.size / 1000;
+    this.camera.far = this.size * 100;
+    this.camera.position.set(0.9 * this.size, -1.3 * this.size, 0.8 * this.size);
+    this.controls.target.set(0, 0, 0);
+    this.camera.updateProjectionMatrix();
+    this.controls.update();
+    this.render();
+  }
+
+  // A sphere marker at model point p, sized relative to the mesh.
+  marker(p, color) {
+    const m = new THREE.Mesh(new THREE.SphereGeometry(this.size * 0.015, 16, 12),
+                             new THREE.MeshBasicMaterial({ color, depthTest: false }));
+    m.renderOrder = 10;
+    m.position.copy(this.toScene(p));
+    return m;
+  }
+
+  // Arrows from model point p along unit directions, with lengths and colours.
+  arrows(p, directions, lengths, colors) {
+    const group = new THREE.Group();
+    directions.forEach((d, i) => {
+      const a = new THREE.ArrowHelper(new THREE.Vector3(d[0], d[1], d[2]).normalize(),
+                                      this.toScene(p), lengths[i], colors[i],
+                                      0.15 * lengths[i], 0.07 * lengths[i]);
+      group.add(a);
+    });
+    return group;
+  }
+
+  // Line segments between model points: pairs [[a, b], ...].
+  segments(pairs, color) {
+    const data = new Float32Array(pairs.length * 6);
+    pairs.forEach(([a, b], i) => {
+      data.set(this.toScene(a).toArray(), 6 * i);
+      data.set(this.toScene(b).toArray(), 6 * i + 3);
+    });
+    const g = new THREE.BufferGeometry();
+    g.setAttribute('position', new THREE.BufferAttribute(data, 3));
+    const lines = new THREE.LineSegments(g, new THREE.LineBasicMaterial({ color, depthTest: false }));
+    lines.renderOrder = 11;
+    return lines;
+  }
+}
+
+// True when this browser can draw WebGL.
+export function webglAvailable() {
+  try {
+    const c = document.createElement('canvas');
+    return !!(c.getContext('webgl2') || c.getContext('webgl'));
+  } catch {
+    return false;
+  }
+}

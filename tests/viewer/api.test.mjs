@@ -1,0 +1,307 @@
+// The server of `pgamesh serve`, over HTTP on loopback: routes, status codes, limits, bad input,
+// path traversal, methods, a bounded burst of concurrent requests, clean shutdown.
+import assert from 'node:assert/strict';
+import { readFileSync } from 'node:fs';
+import { after, before, describe, test } from 'node:test';
+
+import {
+  objBounds, rawRequest, readObj, runCli, startServer, tankPath, tetrahedronObj,
+} from './support.mjs';
+
+let server;
+before(async () => { server = await startServer(); });
+after(async () => { await server.stop(); });
+
+async function getJson(path, init) {
+  const r = await fetch(new URL(path, server.url), init);
+  assert.match(r.headers.get('content-type'), /^application\/json/);
+  return { status: r.status, body: await r.json(), headers: r.headers };
+}
+
+function upload(text, name, url = server.url) {
+  return fetch(new URL(`/api/upload?name=${encodeURIComponent(name)}`, url),
+               { method: 'POST', body: text });
+}
+
+describe('assets', () => {
+  test('the page and its scripts are served with their types', async () => {
+    const expected = {
+      '/': 'text/html', '/index.html': 'text/html', '/style.css': 'text/css',
+      '/app.js': 'application/javascript', '/api.js': 'application/javascript', '/scene.js': 'application/javascript',
+      '/panels.js': 'application/javascript', '/vendor/three/three.module.js': 'application/javascript',
+      '/vendor/three/three.core.js': 'application/javascript',
+      '/vendor/three/OrbitControls.js': 'application/javascript',
+    };
+    for (const [path, type] of Object.entries(expected)) {
+      const r = await fetch(new URL(path, server.url));
+      assert.equal(r.status, 200, path);
+      assert.ok(r.headers.get('content-type').startsWith(type), path);
+      assert.ok((await r.text()).length > 100, path);
+    }
+    const html = await (await fetch(server.url)).text();
+    assert.match(html, /<title>pgamesh viewer<\/title>/);
+    assert.match(html, /"three": "\/vendor\/three\/three.module.js"/);  // no CDN
+    assert.doesNotMatch(html, /https?:\/\//);
+  });
+
+  test('nothing outside the asset table is reachable, however the path is spelled', async () => {
+    const attempts = [
+      '/../../../../etc/passwd', '/%2e%2e/%2e%2e/%2e%2e/etc/passwd', '/..%2f..%2f..%2fetc/passwd',
+      '/vendor/three/../../../../CMakeLists.txt', '/node_modules/three/package.json',
+      '/package.json', '//etc/passwd', '/index.html/../../README.md', '/app.js%00.html',
+      '/%5c..%5c..%5cCMakeLists.txt', '/vendor/', '/api/', '/index.html?x=/../../etc/passwd',
+    ];
+    for (const path of attempts) {
+      const r = await rawRequest(server.url, `GET ${path} HTTP/1.1`);
+      if (path.startsWith('/index.html?')) {
+        assert.equal(r.status, 200, path);  // the query is ignored: still index.html
+        assert.match(r.body, /pgamesh viewer/);
+        continue;
+      }
+      assert.ok(r.status === 404 || r.status === 400, `${path}: ${r.status}`);
+      assert.doesNotMatch(r.body, /root:|cmake_minimum_required|"dependencies"/, path);
+    }
+  });
+});
+
+describe('methods', () => {
+  test('only GET/HEAD on pages and reads, only POST on uploads: 405 with Allow otherwise',
+       async () => {
+    const cases = [
+      ['PUT', '/', 'GET, HEAD'], ['DELETE', '/index.html', 'GET, HEAD'],
+      ['PATCH', '/api/info', 'GET, HEAD'], ['OPTIONS', '/api/meshes', 'GET, HEAD'],
+      ['POST', '/api/info', 'GET, HEAD'], ['POST', '/app.js', 'GET, HEAD'],
+      ['GET', '/api/upload', 'POST'], ['PUT', '/api/upload', 'POST'],
+      ['DELETE', '/api/mesh/f0', 'GET, HEAD'],
+    ];
+    for (const [method, path, allow] of cases) {
+      const r = await fetch(new URL(path, server.url), { method });
+      assert.equal(r.status, 405, `${method} ${path}`);
+      assert.equal(r.headers.get('allow'), allow, `${method} ${path}`);
+      assert.match((await r.json()).error, new RegExp(`method ${method} not allowed`));
+    }
+    const head = await fetch(new URL('/app.js', server.url), { method: 'HEAD' });
+    assert.equal(head.status, 200);
+  });
+
+  test('unknown paths are 404 for every method, unknown methods 400', async () => {
+    for (const method of ['GET', 'POST', 'PUT']) {
+      const r = await fetch(new URL('/no/such/thing', server.url), { method });
+      assert.equal(r.status, 404, method);
+    }
+    const r = await rawRequest(server.url, 'BREW /api/info HTTP/1.1');
+    assert.equal(r.status, 400);
+    const garbage = await rawRequest(server.url, 'this is not http');
+    assert.equal(garbage.status, 400);
+  });
+});
+
+describe('meshes', () => {
+  test('/api/info names the version, upload limit and available features', async () => {
+    const { status, body } = await getJson('/api/info');
+    assert.equal(status, 200);
+    assert.equal(body.max_upload, 64 * 1024 * 1024);
+    assert.match(body.version, /^\d+\.\d+\.\d+$/);
+    assert.equal(typeof body.features.props, 'boolean');
+    assert.equal(typeof body.features.fuel, 'boolean');
+  });
+
+  test('the bundled tank is listed and summarised as the file says', async () => {
+    const { body: list } = await getJson('/api/meshes');
+    const tank = list.meshes.find((m) => m.name === 'tank.obj');
+    assert.ok(tank, JSON.stringify(list));
+    assert.equal(tank.origin, 'bundled');
+
+    const obj = readObj(tankPath);
+    const { status, body } = await getJson(`/api/mesh/${tank.id}`);
+    assert.equal(status, 200);
+    assert.equal(body.name, 'tank.obj');
+    assert.equal(body.format, 'obj');
+    assert.equal(body.vertices, obj.vertices.length);
+    assert.equal(body.faces, obj.faces.length);
+    assert.equal(body.triangles, obj.faces.length);
+    const bounds = objBounds(obj);
+    assert.deepEqual(body.bounds, bounds);
+    assert.deepEqual(body.drawing_origin, [0, 1, 2].map((k) => (bounds.min[k] + bounds.max[k]) / 2));
+  });
+
+  test('the geometry holds every vertex and face of the file', async () => {
+    const obj = readObj(tankPath);
+    const { body: summary } = await getJson('/api/mesh/f0');
+    const r = await fetch(new URL('/api/mesh/f0/geometry', server.url));
+    assert.equal(r.status, 200);
+    const buffer = await r.arrayBuffer();
+    const head = new DataView(buffer, 0, 8);
+    const v = head.getUint32(0, true), t = head.getUint32(4, true);
+    assert.equal(v, obj.vertices.length);
+    assert.equal(t, obj.faces.length);
+    assert.equal(buffer.byteLength, 8 + 12 * v + 12 * t);
+    const positions = new Float32Array(buffer, 8, 3 * v);
+    const indices = new Uint32Array(buffer, 8 + 12 * v, 3 * t);
+    obj.vertices.forEach((p, i) => {
+      for (let k = 0; k < 3; ++k)
+        assert.ok(Math.abs(positions[3 * i + k] + summary.drawing_origin[k] - p[k]) < 1e-6);
+    });
+    assert.deepEqual(Array.from(indices), obj.faces.flat());
+  });
+
+  test('an upload is parsed, stored and can be read back by its id', async () => {
+    const r = await upload(tetrahedronObj, 'dir/../tetra.obj');
+    assert.equal(r.status, 201);
+    const body = await r.json();
+    assert.equal(body.name, 'tetra.obj');  // only the last path component is kept
+    assert.match(body.id, /^u\d+$/);
+    assert.equal(body.vertices, 4);
+    assert.equal(body.faces, 4);
+    assert.deepEqual(body.bounds, { min: [0, 0, 0], max: [1, 1, 1] });
+    const again = await getJson(`/api/mesh/${body.id}`);
+    assert.equal(again.status, 200);
+    assert.deepEqual(again.body, body);
+  });
+
+  test('a quad is drawn as two triangles', async () => {
+    const r = await upload('v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n', 'quad.obj');
+    assert.equal(r.status, 201);
+    const body = await r.json();
+    assert.equal(body.faces, 1);
+    assert.equal(body.triangles, 2);
+  });
+
+  test('bad uploads get 400 with the upload named, and the server keeps serving', async () => {
+    const bad = [
+      ['notes.txt', 'this is not a mesh at all\n'],
+      ['broken.obj', 'v 0 0 0\nv 1 0 0\nf 1 2 9\n'],
+      ['binary.stl', Buffer.from([0xff, 0xfe, 0x00, 0x01, 0x02, 0x03, 0x80, 0x90])],
+    ];
+    for (const [name, content] of bad) {
+      const r = await upload(content, name);
+      assert.equal(r.status, 400, name);
+      const { error } = await r.json();
+      assert.ok(error.startsWith(name), `${name}: ${error}`);
+    }
+    const empty = await upload('', 'empty.stl');
+    assert.equal(empty.status, 400);
+    assert.match((await empty.json()).error, /empty/);
+    assert.equal((await fetch(new URL('/api/info', server.url))).status, 200);
+  });
+
+  test('unknown or malformed mesh ids are 404', async () => {
+    for (const id of ['u999999', 'f999', 'x1', 'f', 'f1a', 'u-1']) {
+      const r = await fetch(new URL(`/api/mesh/${id}`, server.url));
+      assert.equal(r.status, 404, id);
+    }
+  });
+
+  test('only the most recent uploads are kept', async () => {
+    const ids = [];
+    for (let i = 0; i < 10; ++i) ids.push((await (await upload(tetrahedronObj, `t${i}.obj`)).json()).id);
+    assert.equal((await fetch(new URL(`/api/mesh/${ids[0]}`, server.url))).status, 404);
+    assert.equal((await fetch(new URL(`/api/mesh/${ids[9]}`, server.url))).status, 200);
+  });
+});
+
+describe('limits and load', () => {
+  test('uploads over --max-upload get 413 and the server stays up', async () => {
+    const small = await startServer(['--max-upload', '1K', '--quiet']);
+    try {
+      const info = await (await fetch(new URL('/api/info', small.url))).json();
+      assert.equal(info.max_upload, 1024);
+      const big = `# ${'x'.repeat(4000)}\n${tetrahedronObj}`;
+      const r = await upload(big, 'big.obj', small.url);
+      assert.equal(r.status, 413);
+      assert.match((await r.json()).error, /upload limit of 1024 bytes/);
+      const ok = await upload(tetrahedronObj, 'small.obj', small.url);
+      assert.equal(ok.status, 201);
+    } finally {
+      await small.stop();
+    }
+  });
+
+  test('a burst of 240 concurrent requests, 24 in flight: every answer complete', async () => {
+    const appJs = await (await fetch(new URL('/app.js', server.url))).text();
+    const kinds = [
+      async () => {
+        const r = await fetch(new URL('/api/mesh/f0', server.url));
+        return r.status === 200 && (await r.json()).faces === 2976;
+      },
+      async () => {
+        const r = await fetch(new URL('/app.js', server.url));
+        return r.status === 200 && (await r.text()) === appJs;
+      },
+      async () => {
+        const r = await upload(tetrahedronObj, 'burst.obj');
+        return r.status === 201 && (await r.json()).faces === 4;
+      },
+      async () => {
+        const r = await fetch(new URL('/api/mesh/f0/geometry', server.url));
+        return r.status === 200 && (await r.arrayBuffer()).byteLength === 8 + 12 * 1490 + 12 * 2976;
+      },
+    ];
+    const total = 240, inFlight = 24;
+    let next = 0, good = 0;
+    const worker = async () => {
+      while (next < total) {
+        const i = next++;
+        if (await kinds[i % kinds.length]()) ++good;
+      }
+    };
+    await Promise.all(Array.from({ length: inFlight }, worker));
+    assert.equal(good, total);
+  });
+});
+
+describe('command line', () => {
+  test('SIGTERM stops the server cleanly', async () => {
+    const s = await startServer(['--quiet']);
+    const { code, signal } = await s.stop();
+    assert.equal(signal, null);
+    assert.equal(code, 0);
+    assert.match(s.stderr(), /stopped/);
+  });
+
+  test('a port in use is an error, bad options are usage errors', async () => {
+    const port = new URL(server.url).port;
+    const busy = await runCli(['serve', '--port', port]);
+    assert.equal(busy.code, 1);
+    assert.match(busy.stderr, /cannot listen on 127\.0\.0\.1/);
+    for (const args of [['--port', '70000'], ['--max-upload', 'lots'], ['--bogus']]) {
+      const r = await runCli(['serve', ...args]);
+      assert.equal(r.code, 2, args.join(' '));
+    }
+    const help = await runCli(['serve', '--help']);
+    assert.equal(help.code, 0);
+    assert.match(help.stdout, /--max-upload/);
+  });
+
+  test('files named on the command line are listed first and bad ones reported on use',
+       async () => {
+    const s = await startServer(['--quiet', tankPath, '/nonexistent/nothing.stl']);
+    try {
+      const list = (await (await fetch(new URL('/api/meshes', s.url))).json()).meshes;
+      assert.deepEqual(list.slice(0, 2).map((m) => [m.name, m.origin]),
+                       [['tank.obj', 'command line'], ['nothing.stl', 'command line']]);
+      const r = await fetch(new URL(`/api/mesh/${list[1].id}`, s.url));
+      assert.equal(r.status, 422);
+      assert.match((await r.json()).error, /nothing\.stl/);
+    } finally {
+      await s.stop();
+    }
+  });
+});
+
+// The committed tank really is what the generator writes (the fuel tests rely on it).
+test('tank.obj is a closed, consistently oriented triangle mesh', () => {
+  const { faces } = readObj(tankPath);
+  const directed = new Set();
+  for (const f of faces)
+    for (let k = 0; k < 3; ++k) {
+      const e = `${f[k]},${f[(k + 1) % 3]}`;
+      assert.ok(!directed.has(e), `edge ${e} used twice in one direction`);
+      directed.add(e);
+    }
+  for (const e of directed) {
+    const [a, b] = e.split(',');
+    assert.ok(directed.has(`${b},${a}`), `edge ${e} has no opposite: open`);
+  }
+  assert.ok(readFileSync(tankPath).length < 200 * 1024);
+});

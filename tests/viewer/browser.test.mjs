@@ -1,0 +1,186 @@
+// The viewer page in a real browser (Debian's chromium, headless, driven by playwright-core):
+// meshes opened from the bundled list, the file picker and drag and drop; figures checked against
+// the file and the library; bad uploads shown as messages. Screenshots go to test-artifacts/viewer.
+import assert from 'node:assert/strict';
+import { mkdirSync } from 'node:fs';
+import { createRequire } from 'node:module';
+import { join } from 'node:path';
+import { after, before, describe, test } from 'node:test';
+
+import {
+  artifactsDir, objBounds, readObj, repoRoot, startServer, tankPath, tetrahedronObj,
+} from './support.mjs';
+
+const require = createRequire(join(repoRoot, 'apps', 'viewer', 'web', 'package.json'));
+const { chromium } = require('playwright-core');
+
+const launchOptions = {
+  executablePath: process.env.PGAMESH_CHROMIUM || '/usr/bin/chromium',
+  args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-background-networking',
+         '--disable-component-update', '--no-first-run'],
+  timeout: 30000,
+};
+
+let browser, server;
+before(async () => {
+  mkdirSync(artifactsDir, { recursive: true });
+  [browser, server] = await Promise.all([chromium.launch(launchOptions), startServer(['--quiet'])]);
+});
+after(async () => {
+  await browser?.close();
+  await server?.stop();
+});
+
+// A fresh page on url with console errors collected; waits until the page settled.
+async function openPage(url) {
+  const page = await browser.newPage({ viewport: { width: 1280, height: 800 } });
+  page.setDefaultTimeout(15000);
+  const problems = [];
+  page.on('pageerror', (e) => problems.push(e.message));
+  page.on('console', (m) => { if (m.type() === 'error') problems.push(m.text()); });
+  await page.goto(url);
+  await settled(page);
+  return { page, problems };
+}
+
+function settled(page) {
+  return page.waitForSelector('body[data-state="ready"], body[data-state="error"]');
+}
+
+// The full-precision value of a figure on the page.
+async function figure(page, id) {
+  const v = await page.getAttribute(`#${id}`, 'data-value');
+  assert.ok(v !== null, `figure ${id} is empty`);
+  return JSON.parse(v);
+}
+
+async function shot(page, name) {
+  await page.screenshot({ path: join(artifactsDir, `${name}.png`) });
+}
+
+// Reads the drawn canvas: the fraction of pixels differing from the clear colour.
+function drawnFraction(page) {
+  return page.evaluate(() => {
+    const canvas = document.querySelector('#view canvas');
+    const gl = canvas.getContext('webgl2') || canvas.getContext('webgl');
+    const w = gl.drawingBufferWidth, h = gl.drawingBufferHeight;
+    const px = new Uint8Array(4 * w * h);
+    gl.readPixels(0, 0, w, h, gl.RGBA, gl.UNSIGNED_BYTE, px);
+    const clear = [0xf3, 0xf5, 0xf9];
+    let differ = 0;
+    for (let i = 0; i < px.length; i += 4)
+      if (Math.abs(px[i] - clear[0]) + Math.abs(px[i + 1] - clear[1]) +
+          Math.abs(px[i + 2] - clear[2]) > 24) ++differ;
+    return differ / (w * h);
+  });
+}
+
+async function selectFile(page, name, content) {
+  await page.setInputFiles('#file-input', { name, mimeType: 'application/octet-stream',
+                                            buffer: Buffer.from(content) });
+}
+
+describe('viewer page', () => {
+  test('opens on the bundled tank, draws it and shows its figures', async () => {
+    const { page, problems } = await openPage(server.url);
+    try {
+      assert.equal(await page.getAttribute('body', 'data-state'), 'ready');
+      assert.equal(await page.textContent('#mesh-name'), 'tank.obj');
+      const obj = readObj(tankPath);
+      assert.equal(await figure(page, 'mesh-vertices'), obj.vertices.length);
+      assert.equal(await figure(page, 'mesh-faces'), obj.faces.length);
+      assert.equal(await figure(page, 'mesh-triangles'), obj.faces.length);
+      const bounds = objBounds(obj);
+      assert.deepEqual(await figure(page, 'mesh-bounds-min'), bounds.min);
+      assert.deepEqual(await figure(page, 'mesh-bounds-max'), bounds.max);
+      const drawn = await drawnFraction(page);
+      assert.ok(drawn > 0.05, `only ${drawn} of the view is drawn`);
+      await shot(page, 'tank');
+      assert.deepEqual(problems, []);
+    } finally {
+      await page.close();
+    }
+  });
+
+  test('a mesh opened with the file picker replaces the view and figures', async () => {
+    const { page, problems } = await openPage(server.url);
+    try {
+      await selectFile(page, 'tetra.obj', tetrahedronObj);
+      await page.waitForSelector('#mesh-name:text("tetra.obj")');
+      await settled(page);
+      assert.equal(await figure(page, 'mesh-vertices'), 4);
+      assert.equal(await figure(page, 'mesh-faces'), 4);
+      assert.deepEqual(await figure(page, 'mesh-bounds-max'), [1, 1, 1]);
+      assert.ok(await drawnFraction(page) > 0.01);
+      await shot(page, 'tetra-file-picker');
+      assert.deepEqual(problems, []);
+    } finally {
+      await page.close();
+    }
+  });
+
+  test('a mesh dropped on the view is opened', async () => {
+    const { page, problems } = await openPage(server.url);
+    try {
+      const dataTransfer = await page.evaluateHandle((text) => {
+        const dt = new DataTransfer();
+        dt.items.add(new File([text], 'dropped.obj', { type: 'application/octet-stream' }));
+        return dt;
+      }, tetrahedronObj.replace('v 0 0 1', 'v 0 0 2'));
+      await page.dispatchEvent('#view', 'dragover', { dataTransfer });
+      assert.equal(await page.isVisible('#drop-overlay'), true);
+      await shot(page, 'drag-over');
+      await page.dispatchEvent('#view', 'drop', { dataTransfer });
+      await page.waitForSelector('#mesh-name:text("dropped.obj")');
+      await settled(page);
+      assert.deepEqual(await figure(page, 'mesh-bounds-max'), [1, 1, 2]);
+      assert.equal(await page.isVisible('#drop-overlay'), false);
+      assert.deepEqual(problems, []);
+    } finally {
+      await page.close();
+    }
+  });
+
+  test('a broken upload shows the server\'s message, and the page goes on working', async () => {
+    const { page } = await openPage(server.url);
+    try {
+      await selectFile(page, 'broken.obj', 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 7\n');
+      await page.waitForSelector('body[data-state="error"]');
+      const message = await page.textContent('#message');
+      assert.ok(message.startsWith('broken.obj'), message);
+      assert.equal(await page.isVisible('#message'), true);
+      await shot(page, 'broken-upload');
+
+      await selectFile(page, 'notes.txt', 'Dear diary, today I did not write a mesh.\n');
+      await page.waitForSelector('#message:text("notes.txt")');
+      await shot(page, 'not-a-mesh');
+
+      await page.selectOption('#mesh-select', { label: 'tank.obj' });
+      await page.waitForSelector('body[data-state="ready"]');
+      assert.equal(await page.isVisible('#message'), false);
+      assert.equal(await figure(page, 'mesh-faces'), readObj(tankPath).faces.length);
+    } finally {
+      await page.close();
+    }
+  });
+
+  test('a file over the upload limit is refused with a message naming the limit', async () => {
+    const small = await startServer(['--quiet', '--max-upload', '2K']);
+    const { page } = await openPage(small.url);
+    try {
+      await selectFile(page, 'huge.obj', `# ${'x'.repeat(5000)}\n${tetrahedronObj}`);
+      await page.waitForSelector('body[data-state="error"]');
+      const message = await page.textContent('#message');
+      assert.match(message, /huge\.obj/);
+      assert.match(message, /upload limit of 2048 bytes/);
+      await shot(page, 'over-limit');
+      // The server itself refuses too, when a client does not check first.
+      const status = await page.evaluate(async () => (await fetch('/api/upload?name=x.obj',
+        { method: 'POST', body: 'x'.repeat(4096) })).status);
+      assert.equal(status, 413);
+    } finally {
+      await page.close();
+      await small.stop();
+    }
+  });
+});

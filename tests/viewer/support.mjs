@@ -1,0 +1,144 @@
+// Shared by the viewer tests: start `pgamesh serve` on a free loopback port, read meshes
+// independently of the server, raw HTTP for requests that fetch() would normalise.
+import { spawn } from 'node:child_process';
+import { readFileSync } from 'node:fs';
+import net from 'node:net';
+import { dirname, join, resolve } from 'node:path';
+import { fileURLToPath } from 'node:url';
+
+export const repoRoot = resolve(dirname(fileURLToPath(import.meta.url)), '..', '..');
+export const cliPath = process.env.PGAMESH_CLI || join(repoRoot, 'build', 'release', 'pgamesh');
+export const tankPath = join(repoRoot, 'data', 'meshes', 'tank.obj');
+export const artifactsDir = join(repoRoot, 'test-artifacts', 'viewer');
+
+// Servers still running when the test process ends (a failed test) are killed with it.
+const running = new Set();
+process.on('exit', () => { for (const child of running) child.kill('SIGKILL'); });
+
+// Starts the server with extra arguments; resolves to { url, child, stderr(), exited, stop() }
+// once it printed its URL. Rejects when it exits first or prints no URL within 10 s.
+export function startServer(args = []) {
+  return new Promise((resolvePromise, reject) => {
+    const child = spawn(cliPath, ['serve', '--port', '0', ...args],
+                        { stdio: ['ignore', 'pipe', 'pipe'] });
+    running.add(child);
+    child.once('exit', () => running.delete(child));
+    let out = '', err = '';
+    const exited = new Promise((r) => child.once('exit', (code, signal) => r({ code, signal })));
+    const timer = setTimeout(() => {
+      child.kill('SIGKILL');
+      reject(new Error(`pgamesh serve printed no URL within 10 s; stderr: ${err}`));
+    }, 10000);
+    child.stderr.on('data', (d) => { err += d; });
+    child.stdout.on('data', (d) => {
+      out += d;
+      const m = /listening on (http:\/\/\S+)/.exec(out);
+      if (m) {
+        clearTimeout(timer);
+        resolvePromise({
+          url: m[1],
+          child,
+          stderr: () => err,
+          exited,
+          // SIGTERM, then SIGKILL after 5 s; resolves to { code, signal } ({ signal:
+          // 'SIGKILL' } tells that the server did not stop by itself).
+          stop: async () => {
+            if (child.exitCode === null && child.signalCode === null) child.kill('SIGTERM');
+            const timer = setTimeout(() => child.kill('SIGKILL'), 5000);
+            const result = await exited;
+            clearTimeout(timer);
+            return result;
+          },
+        });
+      }
+    });
+    exited.then(({ code }) => {
+      clearTimeout(timer);
+      reject(new Error(`pgamesh serve exited with ${code} before listening; stderr: ${err}`));
+    });
+  });
+}
+
+// Runs the CLI to completion: { code, stdout, stderr }.
+export function runCli(args, timeoutMs = 20000) {
+  return new Promise((resolvePromise) => {
+    const child = spawn(cliPath, args, { stdio: ['ignore', 'pipe', 'pipe'] });
+    let stdout = '', stderr = '';
+    child.stdout.on('data', (d) => { stdout += d; });
+    child.stderr.on('data', (d) => { stderr += d; });
+    const timer = setTimeout(() => child.kill('SIGKILL'), timeoutMs);
+    child.on('exit', (code) => {
+      clearTimeout(timer);
+      resolvePromise({ code, stdout, stderr });
+    });
+  });
+}
+
+// Sends one raw HTTP/1.1 request (request line written exactly as given) and resolves to
+// { status, headers, body } of the answer.
+export function rawRequest(url, requestLine, extraHeaders = '') {
+  const { hostname, port } = new URL(url);
+  return new Promise((resolvePromise, reject) => {
+    const socket = net.connect(Number(port), hostname, () => {
+      socket.write(`${requestLine}\r\nHost: ${hostname}\r\nConnection: close\r\n${extraHeaders}\r\n`);
+    });
+    let data = '';
+    let done = false;
+    // Answers are complete at Content-Length: a server may keep the connection open after a
+    // request it could not parse (it never saw "Connection: close").
+    const finish = () => {
+      const end = data.indexOf('\r\n\r\n');
+      if (done || end < 0) return;
+      const lines = data.slice(0, end).split('\r\n');
+      const headers = {};
+      for (const l of lines.slice(1)) {
+        const i = l.indexOf(':');
+        headers[l.slice(0, i).trim().toLowerCase()] = l.slice(i + 1).trim();
+      }
+      const body = data.slice(end + 4);
+      if (body.length < Number(headers['content-length'] || 0)) return;
+      done = true;
+      socket.destroy();
+      resolvePromise({ status: Number(lines[0].split(' ')[1]), headers, body });
+    };
+    socket.setTimeout(5000, () => socket.destroy(new Error('raw request timed out')));
+    socket.on('data', (d) => {
+      data += d.toString('latin1');
+      finish();
+    });
+    socket.on('error', (e) => { if (!done) reject(e); });
+    socket.on('end', () => {
+      finish();
+      if (!done) reject(new Error(`incomplete answer: ${JSON.stringify(data)}`));
+    });
+  });
+}
+
+// An OBJ read here, independently of the library: vertices [[x,y,z]], faces [[i,j,k,...]]
+// (0-based; positive indices only, which is what the test meshes use).
+export function readObj(path) {
+  const vertices = [], faces = [];
+  for (const line of readFileSync(path, 'utf8').split('\n')) {
+    const t = line.trim().split(/\s+/);
+    if (t[0] === 'v') vertices.push(t.slice(1, 4).map(Number));
+    if (t[0] === 'f') faces.push(t.slice(1).map((s) => Number(s.split('/')[0]) - 1));
+  }
+  return { vertices, faces };
+}
+
+// Bounds of an OBJ read by readObj.
+export function objBounds({ vertices }) {
+  const min = [Infinity, Infinity, Infinity], max = [-Infinity, -Infinity, -Infinity];
+  for (const v of vertices)
+    for (let k = 0; k < 3; ++k) {
+      min[k] = Math.min(min[k], v[k]);
+      max[k] = Math.max(max[k], v[k]);
+    }
+  return { min, max };
+}
+
+// A unit right tetrahedron as OBJ text (outward counter-clockwise faces).
+export const tetrahedronObj = [
+  'v 0 0 0', 'v 1 0 0', 'v 0 1 0', 'v 0 0 1',
+  'f 1 3 2', 'f 1 2 4', 'f 1 4 3', 'f 2 3 4', '',
+].join('\n');
