@@ -1,5 +1,5 @@
-// `pgamesh serve [FILE...] [--port P] [--host H] [--max-upload BYTES]`: the viewer page and its JSON
-// API on a local HTTP server (apps/viewer/server, docs/viewer.md).
+// `pgamesh serve [FILE...] [--port P] [--host H] [--max-upload BYTES]`: the viewer page and its
+// JSON API on a local HTTP server (apps/viewer/server, docs/viewer.md).
 #include <charconv>
 #include <cstdio>
 #include <cstring>
@@ -17,20 +17,21 @@ namespace pgamesh::cli {
 namespace {
 
 void print_serve_help(std::FILE* out) {
-  std::fprintf(out,
-               "usage: pgamesh serve [FILE...] [options]\n"
-               "\n"
-               "Starts the viewer: a local web page showing meshes, their mass properties and\n"
-               "fuel, with a JSON API. Open the printed URL in a browser. Ctrl-C stops it.\n"
-               "FILEs named here are listed on the page beside the bundled meshes.\n"
-               "\n"
-               "options:\n"
-               "  --port P          TCP port (default 8080; 0 picks a free one)\n"
-               "  --host H          address to bind (default 127.0.0.1, this machine only)\n"
-               "  --max-upload N    largest accepted upload in bytes, suffix K, M or G allowed\n"
-               "                    (default 64M)\n"
-               "  --assets DIR      folder of the page (default: the source tree's apps/viewer/web)\n"
-               "  --quiet           do not log each request on stderr\n");
+  std::fprintf(
+      out,
+      "usage: pgamesh serve [FILE...] [options]\n"
+      "\n"
+      "Starts the viewer: a local web page showing meshes, their mass properties and\n"
+      "fuel, with a JSON API. Open the printed URL in a browser. Ctrl-C stops it.\n"
+      "FILEs named here are listed on the page beside the bundled meshes.\n"
+      "\n"
+      "options:\n"
+      "  --port P          TCP port (default 8080; 0 picks a free one)\n"
+      "  --host H          address to bind (default 127.0.0.1, this machine only)\n"
+      "  --max-upload N    largest accepted upload in bytes, suffix K, M or G allowed\n"
+      "                    (default 64M)\n"
+      "  --assets DIR      folder of the page (default: the source tree's apps/viewer/web)\n"
+      "  --quiet           do not log each request on stderr\n");
 }
 
 #ifdef PGAMESH_WITH_VIEWER
@@ -41,10 +42,14 @@ bool parse_size(std::string_view text, std::size_t& out) {
   if (ec != std::errc() || value == 0) return false;
   std::string_view rest(end, text.data() + text.size() - end);
   int shift = 0;
-  if (rest == "K" || rest == "k") shift = 10;
-  else if (rest == "M" || rest == "m") shift = 20;
-  else if (rest == "G" || rest == "g") shift = 30;
-  else if (!rest.empty()) return false;
+  if (rest == "K" || rest == "k")
+    shift = 10;
+  else if (rest == "M" || rest == "m")
+    shift = 20;
+  else if (rest == "G" || rest == "g")
+    shift = 30;
+  else if (!rest.empty())
+    return false;
   if (value > (std::size_t{1} << 40) >> shift) return false;  // at most 1 TiB
   out = value << shift;
   return true;

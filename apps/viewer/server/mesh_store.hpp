@@ -34,8 +34,7 @@ class MeshStore {
   explicit MeshStore(std::size_t max_uploads) : max_uploads_(max_uploads) {}
 
   /// Registers a mesh file to be read when first asked for; returns its id.
-  std::string add_file(const std::string& path, const std::string& name,
-                       const std::string& origin);
+  std::string add_file(const std::string& path, const std::string& name, const std::string& origin);
 
   /// Parses uploaded bytes (format detected from the content) and stores the mesh. Throws
   /// pgamesh::InputError naming `name` and the position when the bytes are not a readable mesh.

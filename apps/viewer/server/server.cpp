@@ -52,9 +52,8 @@ std::string allowed_method(const AssetTable& assets, const std::string& path) {
 
 bool has_mesh_extension(const std::filesystem::path& p) {
   std::string ext = p.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) {
-    return static_cast<char>(std::tolower(c));
-  });
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return ext == ".stl" || ext == ".obj" || ext == ".ply" || ext == ".off";
 }
 
@@ -86,8 +85,10 @@ std::shared_ptr<const StoredMesh> find_mesh(MeshStore& store, const std::string&
                                             httplib::Response& res) {
   try {
     auto stored = store.get(id);
-    if (!stored) send_error(res, 404, "no mesh with id '" + id + "' (uploads are kept " +
-                                          "only for the most recent few)");
+    if (!stored)
+      send_error(
+          res, 404,
+          "no mesh with id '" + id + "' (uploads are kept " + "only for the most recent few)");
     return stored;
   } catch (const InputError& e) {
     send_error(res, 422, e.what());
@@ -103,8 +104,8 @@ void add_routes(httplib::Server& svr, const ServerOptions& options, const AssetT
       send_error(res, 404, "not found: " + req.path);
       return httplib::Server::HandlerResponse::Handled;
     }
-    const bool ok = allowed == "GET" ? (req.method == "GET" || req.method == "HEAD")
-                                     : req.method == allowed;
+    const bool ok =
+        allowed == "GET" ? (req.method == "GET" || req.method == "HEAD") : req.method == allowed;
     if (!ok) {
       res.set_header("Allow", allowed == "GET" ? "GET, HEAD" : allowed);
       send_error(res, 405, "method " + req.method + " not allowed on " + req.path);
@@ -159,7 +160,8 @@ void add_routes(httplib::Server& svr, const ServerOptions& options, const AssetT
     }
   });
 
-  // Errors raised by httplib itself (oversized body 413, malformed request 400, ...) get a JSON body.
+  // Errors raised by httplib itself (oversized body 413, malformed request 400, ...) get a JSON
+  // body.
   svr.set_error_handler([&options](const httplib::Request&, httplib::Response& res) {
     if (!res.body.empty()) return;
     if (res.status == 413)
@@ -226,9 +228,9 @@ int run_server(const ServerOptions& options) {
   svr.set_default_headers({{"X-Content-Type-Options", "nosniff"}});
   add_routes(svr, options, assets, store);
 
-  const int port = options.port == 0 ? svr.bind_to_any_port(options.host)
-                                     : (svr.bind_to_port(options.host, options.port) ? options.port
-                                                                                    : -1);
+  const int port = options.port == 0
+                       ? svr.bind_to_any_port(options.host)
+                       : (svr.bind_to_port(options.host, options.port) ? options.port : -1);
   if (port < 0) {
     std::fprintf(stderr, "pgamesh serve: cannot listen on %s:%d (in use, or not a local address)\n",
                  options.host.c_str(), options.port);
