@@ -186,7 +186,9 @@ TYPED_TEST(Pga3Motor, NormalizedAndInverse) {
 }
 
 TEST(Pga3MotorFixed, ZeroAxisRotorIsIdentity) {
-  EXPECT_EQ(rotor(1.0, Vec3d{0, 0, 0}), identity_motor<double>());
+  EXPECT_EQ(rotor(1.0, Vec3d{0, 0, 0}), (Motor<double>{1, 0, 0, 0, 0, 0, 0, 0}));
+  EXPECT_EQ(identity_motor<double>(), (Motor<double>{1, 0, 0, 0, 0, 0, 0, 0}));
+  EXPECT_EQ(apply(identity_motor<double>(), point(1.0, 2.0, 3.0)), point(1.0, 2.0, 3.0));
   EXPECT_EQ(normalized(Motor<double>{}), Motor<double>{});
 }
 

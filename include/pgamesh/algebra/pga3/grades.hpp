@@ -123,7 +123,7 @@ constexpr Line<T> line_through(Vec3<T> p, Vec3<T> d) {
 /// The identity motor 1.
 template <class T>
 constexpr Motor<T> identity_motor() {
-  return {};
+  return {T(1), T(0), T(0), T(0), T(0), T(0), T(0), T(0)};
 }
 
 }  // namespace pgamesh::pga3
