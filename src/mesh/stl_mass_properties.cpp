@@ -8,17 +8,9 @@ namespace pgamesh {
 
 namespace {
 
-struct StlPartial {
-  BoundarySums sums;
-  Box3 box;
-  StlPartial& operator+=(const StlPartial& o) {
-    sums += o.sums;
-    box.add(o.box);
-    return *this;
-  }
-};
-
-Vec3d sampled_reference(const BinaryStlView& view) {
+// The bounding box of evenly spaced records: cheap, deterministic, and close enough to the whole
+// box for placing the reference point and judging float32 precision.
+Box3 sampled_box(const BinaryStlView& view) {
   Box3 box;
   const std::uint64_t step = std::max<std::uint64_t>(1, view.count / stl_reference_samples);
   for (std::uint64_t i = 0; i < view.count; i += step) {
@@ -27,7 +19,7 @@ Vec3d sampled_reference(const BinaryStlView& view) {
     for (const Vec3d& p : v)
       if (std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z)) box.add(p);
   }
-  return box.centre();
+  return box;
 }
 
 bool finite(const BoundarySums& s) {
@@ -41,25 +33,23 @@ bool finite(const BoundarySums& s) {
 
 MassProperties binary_stl_mass_properties(const BinaryStlView& view, const std::string& name,
                                           const MassOptions& options) {
-  const Vec3d ref = sampled_reference(view);
-  const StlPartial total = chunked_sums<StlPartial>(
-      view.count, options.threads, [&](StlPartial& p, std::size_t begin, std::size_t end) {
+  const Box3 box = sampled_box(view);
+  const Vec3d ref = box.centre();
+  const BoundarySums total = chunked_sums(
+      view.count, options.threads, [&](BoundarySums& s, std::size_t begin, std::size_t end) {
         const unsigned char* r = view.records + stl_record_bytes * begin;
         for (std::size_t i = begin; i < end; ++i, r += stl_record_bytes) {
           Vec3d v[3];
           stl_triangle(r, v);
-          p.box.add(v[0]);
-          p.box.add(v[1]);
-          p.box.add(v[2]);
-          add_triangle(p.sums, v[0] - ref, v[1] - ref, v[2] - ref);
+          add_triangle(s, v[0] - ref, v[1] - ref, v[2] - ref);
         }
       });
   // A NaN or infinity anywhere poisons the sums: name the first culprit (throws).
-  if (!finite(total.sums)) check_binary_stl_finite(view, name);
-  MassProperties p = mass_properties_from_sums(total.sums, ref, options);
+  if (!finite(total)) check_binary_stl_finite(view, name);
+  MassProperties p = mass_properties_from_sums(total, ref, options);
   p.faces = p.triangles = view.count;
   p.vertices = 3 * view.count;
-  if (auto w = float32_precision_warning(total.box)) p.warnings.push_back(*w);
+  if (auto w = float32_precision_warning(box)) p.warnings.push_back(*w);
   return p;
 }
 

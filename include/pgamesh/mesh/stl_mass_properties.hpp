@@ -12,8 +12,8 @@
 
 namespace pgamesh {
 
-// Records sampled to place the reference point: the bounding-box centre of at most this many
-// evenly spaced triangles (deterministic, and near the mesh whatever its size).
+// Records sampled to place the reference point and judge float32 precision: the bounding box of
+// at most this many evenly spaced triangles (deterministic, and near the mesh whatever its size).
 inline constexpr std::uint64_t stl_reference_samples = 4096;
 
 // Mass properties of the triangles of a binary STL view, accumulated about the centre of a sample

@@ -1,0 +1,92 @@
+// Mass-property accumulation speed: per-triangle cost of the boundary sums (paper Table 1,
+// eqs. 5.3–5.6), whole mass_properties() on a Mesh, and the streamed binary STL path in MB/s.
+//   build/release/bench/bench_mass_properties --benchmark_min_time=0.5
+#include <benchmark/benchmark.h>
+
+#include <cstring>
+#include <vector>
+
+#include "pgamesh/geometry/body_moments.hpp"
+#include "pgamesh/mesh/mass_properties.hpp"
+#include "pgamesh/mesh/primitives.hpp"
+#include "pgamesh/mesh/stl_mass_properties.hpp"
+
+using namespace pgamesh;
+
+namespace {
+
+// icosphere level 6: 81 920 triangles; level 8: 1 310 720.
+const Mesh& sphere(int level) {
+  static std::vector<Mesh> cache(11);
+  if (cache[level].vertices.empty()) cache[level] = icosphere(level, 1.0);
+  return cache[level];
+}
+
+std::vector<char> stl_of(const Mesh& m) {
+  std::vector<char> out(84 + 50 * m.face_count(), 0);
+  const auto count = static_cast<std::uint32_t>(m.face_count());
+  std::memcpy(out.data() + 80, &count, 4);
+  char* r = out.data() + 84;
+  for (std::size_t f = 0; f < m.face_count(); ++f, r += 50)
+    for (int k = 0; k < 3; ++k) {
+      const Vec3d v = m.vertices[m.face(f)[k]];
+      const float xyz[3] = {static_cast<float>(v.x), static_cast<float>(v.y),
+                            static_cast<float>(v.z)};
+      std::memcpy(r + 12 + 12 * k, xyz, 12);
+    }
+  return out;
+}
+
+// The bare per-triangle sums, one thread, vertices already relative to the reference point.
+void BM_AddTriangle(benchmark::State& state) {
+  const Mesh& m = sphere(static_cast<int>(state.range(0)));
+  for (auto _ : state) {
+    BoundarySums s;
+    for (std::size_t f = 0; f < m.face_count(); ++f) {
+      const std::uint32_t* c = m.face(f);
+      add_triangle(s, m.vertices[c[0]], m.vertices[c[1]], m.vertices[c[2]]);
+    }
+    benchmark::DoNotOptimize(s);
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(m.face_count()));
+  state.counters["ns_per_triangle"] =
+      benchmark::Counter(static_cast<double>(state.iterations() * m.face_count()),
+                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(BM_AddTriangle)->Arg(6)->Arg(8)->Unit(benchmark::kMillisecond);
+
+// mass_properties(Mesh): reference point, sums, Jacobi; threads = range(1).
+void BM_MassPropertiesMesh(benchmark::State& state) {
+  const Mesh& m = sphere(static_cast<int>(state.range(0)));
+  MassOptions opt;
+  opt.threads = static_cast<unsigned>(state.range(1));
+  for (auto _ : state) benchmark::DoNotOptimize(mass_properties(m, opt));
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(m.face_count()));
+  state.counters["ns_per_triangle"] =
+      benchmark::Counter(static_cast<double>(state.iterations() * m.face_count()),
+                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(BM_MassPropertiesMesh)
+    ->Args({8, 1})
+    ->Args({8, 2})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+// The streamed binary STL path from bytes in memory: MB/s of STL; threads = range(1).
+void BM_StreamedStl(benchmark::State& state) {
+  static const std::vector<char> bytes = stl_of(sphere(8));
+  const auto view = binary_stl_view(bytes, "bench.stl");
+  MassOptions opt;
+  opt.threads = static_cast<unsigned>(state.range(0));
+  for (auto _ : state)
+    benchmark::DoNotOptimize(binary_stl_mass_properties(*view, "bench.stl", opt));
+  state.SetBytesProcessed(state.iterations() * static_cast<std::int64_t>(bytes.size()));
+  state.counters["ns_per_triangle"] =
+      benchmark::Counter(static_cast<double>(state.iterations() * view->count),
+                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(BM_StreamedStl)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+}  // namespace
+
+BENCHMARK_MAIN();

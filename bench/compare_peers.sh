@@ -1,0 +1,107 @@
+#!/usr/bin/env bash
+# Whole-process timings of `pgamesh props` against the I/O floor (cat FILE > /dev/null) and peer
+# tools from Debian, on generated closed tori of 10^3 ... 10^7 triangles, in one run. Reports wall
+# time (best of REPEAT runs, warm page cache), peak resident memory (/usr/bin/time %M, worst run)
+# and ratios as a Markdown table.
+#
+#   bench/compare_peers.sh [TRIANGLES ...]          default: 1000 10000 100000 1000000
+#   FORMATS="stl stl-ascii obj ply" REPEAT=3 WORK=/tmp/pgamesh-bench BUILD=build/release
+#
+# Peers (scripts/setup.sh bench installs them; missing ones are skipped): admesh (STL), a CGAL
+# program (bench/peers/cgal_props.cpp: PMP::volume/area/centroid), VTK vtkMassProperties
+# (python3-vtk9), Open3D load + area (python3-open3d), numpy-stl (python3-stl, STL only).
+# Columns: "x floor" = wall / cat's wall; "vs pgamesh" = wall / wall of `pgamesh props` (with
+# topology, the like-for-like pass) on the same file; RSS / file = peak resident memory / file size.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+root=$(pwd)
+build=${BUILD:-build/release}
+work=${WORK:-/tmp/pgamesh-bench}
+repeat=${REPEAT:-3}
+formats=${FORMATS:-"stl stl-ascii obj ply"}
+sizes=("$@")
+[ ${#sizes[@]} -eq 0 ] && sizes=(1000 10000 100000 1000000)
+mkdir -p "$work"
+
+if [ ! -x "$build/pgamesh" ] || [ ! -x "$build/bench/pgamesh_gen_mesh" ]; then
+  cmake --preset release > /dev/null
+  cmake --build --preset release -j2 --target pgamesh_cli pgamesh_gen_mesh > /dev/null
+fi
+pgamesh=$root/$build/pgamesh
+gen=$root/$build/bench/pgamesh_gen_mesh
+cgal=$root/$build/bench/cgal_props
+if [ ! -x "$cgal" ] && dpkg-query -W -f='${Status}' libcgal-dev 2>/dev/null | grep -q "ok installed"; then
+  echo "building the CGAL peer (takes a minute or two)..." >&2
+  cmake --build --preset release -j2 --target cgal_props > /dev/null 2>&1 || true
+fi
+have() { command -v "$1" > /dev/null 2>&1; }
+pymod() { /usr/bin/python3 -c "import $1" > /dev/null 2>&1; }
+have_admesh=$(have admesh && echo 1 || echo 0)
+have_vtk=$(pymod vtk && echo 1 || echo 0)
+have_o3d=$(pymod open3d && echo 1 || echo 0)
+have_nstl=$(pymod stl && echo 1 || echo 0)
+have_cgal=$([ -x "$cgal" ] && echo 1 || echo 0)
+
+# run_tool CMD...: best wall seconds and worst peak RSS (kB) of $repeat runs -> "$wall $rss", or
+# "fail" when the tool exits non-zero or runs for more than 15 minutes.
+run_tool() {
+  local best="" rss=0 t0 t1 wall m
+  for _ in $(seq "$repeat"); do
+    t0=$(date +%s%N)
+    if ! /usr/bin/time -f %M -o "$work/rss" timeout 900 "$@" > "$work/out" 2> "$work/err"; then
+      echo fail
+      return
+    fi
+    t1=$(date +%s%N)
+    wall=$(( t1 - t0 ))
+    m=$(tail -1 "$work/rss")
+    [ -z "$best" ] || [ "$wall" -lt "$best" ] && best=$wall
+    [ "$m" -gt "$rss" ] && rss=$m
+  done
+  echo "$best $rss"
+}
+
+ext_of() {
+  case $1 in
+    stl) echo bin.stl ;; stl-ascii) echo ascii.stl ;; *) echo "$1" ;;
+  esac
+}
+
+echo "| triangles | format | file MB | tool | wall s | x floor | vs pgamesh | peak RSS MB | RSS / file |"
+echo "|---:|---|---:|---|---:|---:|---:|---:|---:|"
+for n in "${sizes[@]}"; do
+  for fmt in $formats; do
+    file=$work/torus_$n.$(ext_of "$fmt")
+    [ -s "$file" ] || "$gen" "$n" "$fmt" "$file" > /dev/null
+    bytes=$(stat -c %s "$file")
+    cat "$file" > /dev/null  # warm the page cache
+    tools=("cat" "pgamesh props --no-topology" "pgamesh props")
+    cmds=("cat $file" "$pgamesh props $file --no-topology --json" "$pgamesh props $file --json")
+    case $fmt in stl|stl-ascii)
+      [ "$have_admesh" = 1 ] && { tools+=("admesh"); cmds+=("admesh $file"); }
+      [ "$have_nstl" = 1 ] && { tools+=("numpy-stl"); cmds+=("/usr/bin/python3 $root/bench/peers/numpy_stl_props.py $file"); } ;;
+    esac
+    [ "$have_cgal" = 1 ] && { tools+=("CGAL PMP"); cmds+=("$cgal $file"); }
+    if [ "$fmt" != off ]; then
+      [ "$have_vtk" = 1 ] && { tools+=("VTK"); cmds+=("/usr/bin/python3 $root/bench/peers/vtk_props.py $file"); }
+      [ "$have_o3d" = 1 ] && { tools+=("Open3D"); cmds+=("/usr/bin/python3 $root/bench/peers/open3d_props.py $file"); }
+    fi
+    floor="" ref=""
+    for i in "${!tools[@]}"; do
+      # shellcheck disable=SC2086
+      r=$(run_tool ${cmds[$i]})
+      if [ "$r" = fail ]; then
+        echo "| $n | $fmt | $(awk "BEGIN{printf \"%.1f\", $bytes/1e6}") | ${tools[$i]} | fail | | | | |"
+        continue
+      fi
+      read -r ns kb <<< "$r"
+      [ -z "$floor" ] && floor=$ns
+      [ "${tools[$i]}" = "pgamesh props" ] && ref=$ns
+      awk -v n="$n" -v f="$fmt" -v b="$bytes" -v t="${tools[$i]}" -v ns="$ns" -v kb="$kb" \
+          -v fl="$floor" -v ref="$ref" 'BEGIN {
+        vs = (ref == "" ? "" : sprintf("%.2f", ns / ref));
+        printf "| %d | %s | %.1f | %s | %.3f | %.1f | %s | %.1f | %.2f |\n",
+               n, f, b / 1e6, t, ns / 1e9, ns / fl, vs, kb / 1024, kb * 1024 / b }'
+    done
+  done
+done
