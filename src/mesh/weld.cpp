@@ -1,0 +1,225 @@
+#include "pgamesh/mesh/weld.hpp"
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <unordered_map>
+
+namespace pgamesh {
+
+namespace {
+
+// MurmurHash3's 64-bit finaliser: every input bit affects every output bit, so coordinates that
+// differ only in their last mantissa bits still land in different slots.
+inline std::uint64_t mix64(std::uint64_t h) {
+  h ^= h >> 33;
+  h *= 0xff51afd7ed558ccdULL;
+  h ^= h >> 33;
+  h *= 0xc4ceb9fe1a85ec53ULL;
+  h ^= h >> 33;
+  return h;
+}
+
+// The bits of a coordinate with −0 mapped to +0 (−0 + 0 = +0 in round-to-nearest), so that the two
+// zeros weld while every other value welds only with itself.
+inline std::uint64_t coordinate_bits(double d) {
+  d += 0.0;
+  return std::bit_cast<std::uint64_t>(d);
+}
+
+struct Key {
+  std::uint64_t x, y, z;
+  friend bool operator==(const Key&, const Key&) = default;
+};
+
+inline Key key_of(const Vec3d& v) {
+  return {coordinate_bits(v.x), coordinate_bits(v.y), coordinate_bits(v.z)};
+}
+
+inline std::uint64_t hash_of(const Key& k) {
+  return mix64(k.x ^ mix64(k.y ^ mix64(k.z + 0x9e3779b97f4a7c15ULL)));
+}
+
+// Open addressing with linear probing. A slot holds (upper 32 hash bits << 32) | (welded id + 1),
+// 0 = empty: the tag rejects almost every non-matching slot without touching the key array.
+class ExactTable {
+ public:
+  explicit ExactTable(std::size_t expected) {
+    std::size_t cap = 64;
+    while (cap < 2 * expected) cap *= 2;
+    slots_.assign(cap, 0);
+    mask_ = cap - 1;
+  }
+
+  const std::uint64_t* slot_address(std::uint64_t h) const { return &slots_[h & mask_]; }
+
+  // Returns the welded id of `k` (hash `h`), inserting `next_id` when it is new.
+  std::uint32_t find_or_insert(const Key& k, std::uint64_t h, std::vector<Key>& keys,
+                               bool& inserted) {
+    const std::uint64_t tag = h >> 32;
+    std::size_t pos = h & mask_;
+    for (;;) {
+      const std::uint64_t s = slots_[pos];
+      if (s == 0) {
+        const auto id = static_cast<std::uint32_t>(keys.size());
+        keys.push_back(k);
+        slots_[pos] = (tag << 32) | (std::uint64_t(id) + 1);
+        inserted = true;
+        if (2 * keys.size() > slots_.size()) grow(keys);
+        return id;
+      }
+      if ((s >> 32) == tag) {
+        const auto id = static_cast<std::uint32_t>((s & 0xffffffffULL) - 1);
+        if (keys[id] == k) {
+          inserted = false;
+          return id;
+        }
+      }
+      pos = (pos + 1) & mask_;
+    }
+  }
+
+ private:
+  void grow(const std::vector<Key>& keys) {
+    std::vector<std::uint64_t> old(slots_.size() * 2, 0);
+    old.swap(slots_);
+    mask_ = slots_.size() - 1;
+    for (std::size_t id = 0; id < keys.size(); ++id) {
+      const std::uint64_t h = hash_of(keys[id]);
+      std::size_t pos = h & mask_;
+      while (slots_[pos] != 0) pos = (pos + 1) & mask_;
+      slots_[pos] = ((h >> 32) << 32) | (std::uint64_t(id) + 1);
+    }
+  }
+
+  std::vector<std::uint64_t> slots_;
+  std::size_t mask_ = 0;
+};
+
+WeldMap weld_exact(std::span<const Vec3d> v) {
+  WeldMap out;
+  const std::size_t n = v.size();
+  out.to_welded.resize(n);
+  // Meshes read from STL share each vertex among about six corners: start the table for n / 4
+  // classes and let it grow, so the common case touches a table that is 4× smaller.
+  ExactTable table(n / 4 + 16);
+  std::vector<Key> keys;
+  keys.reserve(n / 4 + 16);
+  out.representative.reserve(n / 4 + 16);
+
+  // The table is far larger than the caches; hashing a few vertices ahead and prefetching their
+  // slots hides most of the memory latency.
+  constexpr std::size_t ahead = 16;
+  std::array<std::uint64_t, 32> ring{};
+  for (std::size_t i = 0; i < std::min(ahead, n); ++i) ring[i & 31] = hash_of(key_of(v[i]));
+  for (std::size_t i = 0; i < n; ++i) {
+    if (i + ahead < n) {
+      const std::uint64_t h = hash_of(key_of(v[i + ahead]));
+      ring[(i + ahead) & 31] = h;
+      __builtin_prefetch(table.slot_address(h));
+    }
+    bool inserted = false;
+    const std::uint32_t id = table.find_or_insert(key_of(v[i]), ring[i & 31], keys, inserted);
+    out.to_welded[i] = id;
+    if (inserted) out.representative.push_back(static_cast<std::uint32_t>(i));
+  }
+  out.merged = n - out.representative.size();
+  return out;
+}
+
+struct Cell {
+  std::int64_t x, y, z;
+  friend bool operator==(const Cell&, const Cell&) = default;
+};
+struct CellHash {
+  std::size_t operator()(const Cell& c) const {
+    return mix64(std::uint64_t(c.x) ^ mix64(std::uint64_t(c.y) ^ mix64(std::uint64_t(c.z))));
+  }
+};
+
+// floor(x / tolerance) as an integer, clamped so that the conversion is always defined.
+inline std::int64_t cell_coordinate(double x, double tolerance) {
+  constexpr double limit = 4.0e18;
+  const double q = std::floor(x / tolerance);
+  if (!(q > -limit)) return static_cast<std::int64_t>(-limit);  // also NaN
+  if (!(q < limit)) return static_cast<std::int64_t>(limit);
+  return static_cast<std::int64_t>(q);
+}
+
+WeldMap weld_tolerance(std::span<const Vec3d> v, double tolerance) {
+  WeldMap out;
+  out.tolerance = tolerance;
+  const std::size_t n = v.size();
+  out.to_welded.resize(n);
+  constexpr std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
+  std::unordered_map<Cell, std::uint32_t, CellHash> head;  // cell → its latest leader
+  head.reserve(n / 4 + 16);
+  std::vector<std::uint32_t> next_in_cell;  // welded id → previous leader of the same cell
+  const double tolerance2 = tolerance * tolerance;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Cell c{cell_coordinate(v[i].x, tolerance), cell_coordinate(v[i].y, tolerance),
+                 cell_coordinate(v[i].z, tolerance)};
+    std::uint32_t best = none;
+    double best_d2 = 0;
+    // A leader within the tolerance lies in one of the 27 cells around c (cell size = tolerance).
+    for (std::int64_t dx = -1; dx <= 1; ++dx)
+      for (std::int64_t dy = -1; dy <= 1; ++dy)
+        for (std::int64_t dz = -1; dz <= 1; ++dz) {
+          const auto it = head.find(Cell{c.x + dx, c.y + dy, c.z + dz});
+          if (it == head.end()) continue;
+          for (std::uint32_t id = it->second; id != none; id = next_in_cell[id]) {
+            const Vec3d d = v[out.representative[id]] - v[i];
+            const double d2 = dot(d, d);
+            if (d2 <= tolerance2 && id < best) {
+              best = id;
+              best_d2 = d2;
+            }
+          }
+        }
+    if (best == none) {
+      const auto id = static_cast<std::uint32_t>(out.representative.size());
+      out.representative.push_back(static_cast<std::uint32_t>(i));
+      auto [it, fresh] = head.try_emplace(c, id);
+      next_in_cell.push_back(fresh ? none : it->second);
+      it->second = id;
+      out.to_welded[i] = id;
+    } else {
+      out.to_welded[i] = best;
+      out.max_moved = std::max(out.max_moved, std::sqrt(best_d2));
+    }
+  }
+  out.merged = n - out.representative.size();
+  return out;
+}
+
+}  // namespace
+
+WeldMap weld_map(std::span<const Vec3d> vertices, double tolerance) {
+  if (!(tolerance >= 0) || !std::isfinite(tolerance))
+    throw std::invalid_argument("weld tolerance must be a finite number >= 0");
+  if (vertices.size() >= std::numeric_limits<std::uint32_t>::max())
+    throw std::length_error("weld: more than 2^32 - 2 vertices");
+  return tolerance == 0 ? weld_exact(vertices) : weld_tolerance(vertices, tolerance);
+}
+
+WeldResult weld(const Mesh& mesh, double tolerance) {
+  for (std::uint32_t c : mesh.corners)
+    if (c >= mesh.vertices.size())
+      throw std::out_of_range("weld: corner index " + std::to_string(c) + " out of range (" +
+                              std::to_string(mesh.vertices.size()) + " vertices)");
+  WeldResult r;
+  r.map = weld_map(mesh.vertices, tolerance);
+  r.mesh.vertices.reserve(r.map.welded_count());
+  for (std::uint32_t rep : r.map.representative) r.mesh.vertices.push_back(mesh.vertices[rep]);
+  r.mesh.corners.resize(mesh.corners.size());
+  for (std::size_t c = 0; c < mesh.corners.size(); ++c)
+    r.mesh.corners[c] = r.map.to_welded[mesh.corners[c]];
+  r.mesh.face_offsets = mesh.face_offsets;
+  return r;
+}
+
+}  // namespace pgamesh

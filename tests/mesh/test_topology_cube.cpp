@@ -1,0 +1,136 @@
+// Topology of cubes: closed, minus one face (the gap is exactly the face), minus two adjacent faces
+// (the gap is √2, not the missing 2: ERRATA §1, Cor. 4.1 note), as triangles and as quads.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "pgamesh/mesh/topology.hpp"
+#include "topology_test_meshes.hpp"
+
+namespace pgamesh {
+namespace {
+
+using test::unit_cube;
+
+TEST(TopologyCube, ClosedCubeIsClosedWithNoGap) {
+  const TopologyReport r = analyze_topology(unit_cube());
+  EXPECT_EQ(r.faces, 12u);
+  EXPECT_EQ(r.triangles, 12u);
+  EXPECT_EQ(r.vertices, 8u);
+  EXPECT_EQ(r.edges, 18u);  // 12 cube edges + 6 face diagonals
+  EXPECT_TRUE(r.closed);
+  EXPECT_TRUE(r.orientation_consistent);
+  EXPECT_TRUE(r.volume_valid);
+  EXPECT_EQ(r.boundary_edges, 0u);
+  EXPECT_EQ(r.nonmanifold_edges, 0u);
+  EXPECT_EQ(r.components, 1u);
+  EXPECT_EQ(r.closed_components, 1u);
+  EXPECT_TRUE(r.boundary_loops.empty());
+  EXPECT_DOUBLE_EQ(r.area, 6.0);
+  EXPECT_DOUBLE_EQ(r.volume, 1.0);
+  EXPECT_EQ(r.gap_area, 0.0);
+  EXPECT_EQ(r.volume_ambiguity(), 0.0);
+  // Σ F about the origin: e0 = −6 V (ERRATA §0.2), normal part 0.
+  EXPECT_DOUBLE_EQ(r.carrier_sum.e0, -6.0);
+  EXPECT_TRUE(r.notes.empty());
+}
+
+TEST(TopologyCube, UnsharedCubeWeldsToEightVertices) {
+  const TopologyReport r = analyze_topology(test::unshared(unit_cube()));
+  EXPECT_EQ(r.input_vertices, 36u);
+  EXPECT_EQ(r.vertices, 8u);
+  EXPECT_EQ(r.merged_vertices, 28u);
+  EXPECT_TRUE(r.closed);
+  EXPECT_DOUBLE_EQ(r.volume, 1.0);
+}
+
+TEST(TopologyCube, CubeMinusTopGapIsTheMissingFace) {
+  // Faces 2, 3 are the z = 1 square (outward normal +z).
+  const TopologyReport r = analyze_topology(test::without_faces(unit_cube(), {2, 3}));
+  EXPECT_FALSE(r.closed);
+  EXPECT_TRUE(r.orientation_consistent);
+  EXPECT_FALSE(r.volume_valid);
+  EXPECT_EQ(r.boundary_edges, 4u);
+  EXPECT_EQ(r.gap_area, 1.0);  // coplanar hole: exactly its area
+  ASSERT_EQ(r.boundary_loops.size(), 1u);
+  const BoundaryLoop& loop = r.boundary_loops[0];
+  EXPECT_TRUE(loop.closed);
+  EXPECT_EQ(loop.half_edges.size(), 4u);
+  EXPECT_EQ(loop.perimeter, 4.0);
+  EXPECT_EQ(loop.area, 1.0);
+  // The remaining faces run the rim clockwise seen from above: vector area −(face normal × area).
+  EXPECT_EQ(loop.vector_area.x, 0.0);
+  EXPECT_EQ(loop.vector_area.y, 0.0);
+  EXPECT_EQ(loop.vector_area.z, -1.0);
+  EXPECT_EQ(r.gap_vector.z, -1.0);
+  EXPECT_EQ(r.loops_area, 1.0);
+  // V(q) over the vertices: 2/3 with q on the bottom, 1 (the whole cube) with q in the hole's
+  // plane.
+  EXPECT_DOUBLE_EQ(r.volume_min, 2.0 / 3.0);
+  EXPECT_DOUBLE_EQ(r.volume_max, 1.0);
+  EXPECT_DOUBLE_EQ(r.volume_ambiguity(), 1.0 / 3.0);
+  // golden mesh_props.json cube_without_top: carrier sum e0 −4, e3 −2.
+  EXPECT_DOUBLE_EQ(r.carrier_sum.e0, -4.0);
+  EXPECT_DOUBLE_EQ(r.carrier_sum.e3, -2.0);
+  EXPECT_DOUBLE_EQ(r.area, 5.0);
+  ASSERT_FALSE(r.notes.empty());
+  EXPECT_NE(r.notes[0].find("open"), std::string::npos);
+}
+
+TEST(TopologyCube, CubeMinusTwoAdjacentFacesGapIsRootTwo) {
+  // Drop z = 1 (2, 3) and x = 1 (10, 11): one loop of 6 edges, missing area 2, gap √2.
+  const TopologyReport r = analyze_topology(test::without_faces(unit_cube(), {2, 3, 10, 11}));
+  EXPECT_EQ(r.boundary_edges, 6u);
+  EXPECT_DOUBLE_EQ(r.gap_area, std::sqrt(2.0));
+  ASSERT_EQ(r.boundary_loops.size(), 1u);
+  EXPECT_EQ(r.boundary_loops[0].half_edges.size(), 6u);
+  EXPECT_DOUBLE_EQ(r.boundary_loops[0].perimeter, 6.0);
+  EXPECT_DOUBLE_EQ(r.boundary_loops[0].area, std::sqrt(2.0));
+  EXPECT_DOUBLE_EQ(r.boundary_loops[0].vector_area.x, -1.0);
+  EXPECT_DOUBLE_EQ(r.boundary_loops[0].vector_area.z, -1.0);
+  EXPECT_DOUBLE_EQ(r.carrier_sum.e0, -2.0);
+  EXPECT_DOUBLE_EQ(r.carrier_sum.e1, -2.0);
+  EXPECT_DOUBLE_EQ(r.carrier_sum.e3, -2.0);
+}
+
+TEST(TopologyCube, QuadCubeMatchesTriangleCube) {
+  const TopologyReport r = analyze_topology(test::unit_cube_quads());
+  EXPECT_EQ(r.faces, 6u);
+  EXPECT_EQ(r.triangles, 12u);
+  EXPECT_EQ(r.edges, 12u);
+  EXPECT_TRUE(r.closed);
+  EXPECT_DOUBLE_EQ(r.area, 6.0);
+  EXPECT_DOUBLE_EQ(r.volume, 1.0);
+  const TopologyReport open = analyze_topology(test::without_faces(test::unit_cube_quads(), {1}));
+  ASSERT_EQ(open.boundary_loops.size(), 1u);
+  EXPECT_EQ(open.gap_area, 1.0);
+  EXPECT_EQ(open.boundary_loops[0].vector_area.z, -1.0);
+}
+
+TEST(TopologyCube, FarFromOriginKeepsDigits) {
+  // ERRATA §6: accumulated about the bounding-box centre, a cube 1e6 away still measures exactly.
+  const Mesh far = test::translated(test::without_faces(unit_cube(), {2, 3}), {1e6, -2e6, 3e6});
+  const TopologyReport r = analyze_topology(far);
+  EXPECT_EQ(r.gap_area, 1.0);
+  EXPECT_EQ(r.boundary_loops[0].area, 1.0);
+  EXPECT_DOUBLE_EQ(r.volume_max, 1.0);
+  EXPECT_DOUBLE_EQ(r.volume_min, 2.0 / 3.0);
+}
+
+TEST(TopologyCube, EmptyMesh) {
+  const TopologyReport r = analyze_topology(Mesh{});
+  EXPECT_EQ(r.faces, 0u);
+  EXPECT_FALSE(r.closed);
+  EXPECT_FALSE(r.volume_valid);
+  EXPECT_EQ(r.components, 0u);
+  EXPECT_EQ(r.area, 0.0);
+}
+
+TEST(TopologyCube, BadIndicesThrow) {
+  Mesh m = unit_cube();
+  m.corners[5] = 99;
+  EXPECT_THROW(analyze_topology(m), std::out_of_range);
+}
+
+}  // namespace
+}  // namespace pgamesh
