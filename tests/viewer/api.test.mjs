@@ -5,7 +5,8 @@ import { readFileSync } from 'node:fs';
 import { after, before, describe, test } from 'node:test';
 
 import {
-  objBounds, rawRequest, readObj, runCli, startServer, tankPath, tetrahedronObj,
+  near, objBounds, rawRequest, readObj, referenceProps, runCli, startServer, tankPath,
+  tetrahedronObj,
 } from './support.mjs';
 
 let server;
@@ -28,7 +29,9 @@ describe('assets', () => {
     const expected = {
       '/': 'text/html', '/index.html': 'text/html', '/style.css': 'text/css',
       '/app.js': 'application/javascript', '/api.js': 'application/javascript', '/scene.js': 'application/javascript',
-      '/panels.js': 'application/javascript', '/vendor/three/three.module.js': 'application/javascript',
+      '/panels.js': 'application/javascript', '/props_panel.js': 'application/javascript',
+      '/fuel_panel.js': 'application/javascript', '/gauge_plot.js': 'application/javascript',
+      '/vendor/three/three.module.js': 'application/javascript',
       '/vendor/three/three.core.js': 'application/javascript',
       '/vendor/three/OrbitControls.js': 'application/javascript',
     };
@@ -197,6 +200,49 @@ describe('meshes', () => {
     for (let i = 0; i < 10; ++i) ids.push((await (await upload(tetrahedronObj, `t${i}.obj`)).json()).id);
     assert.equal((await fetch(new URL(`/api/mesh/${ids[0]}`, server.url))).status, 404);
     assert.equal((await fetch(new URL(`/api/mesh/${ids[9]}`, server.url))).status, 200);
+  });
+});
+
+describe('mass properties', () => {
+  test('the tetrahedron: closed forms at a density', async () => {
+    const { id } = await (await upload(tetrahedronObj, 'tetra.obj')).json();
+    const { status, body } = await getJson(`/api/mesh/${id}/props?density=2.5`);
+    assert.equal(status, 200);
+    assert.ok(near(body.volume, 1 / 6, 1, 1e-15));
+    assert.ok(near(body.area, 1.5 + Math.sqrt(3) / 2, 1, 1e-15));
+    assert.equal(body.density, 2.5);
+    assert.ok(near(body.mass, 2.5 / 6, 1, 1e-15));
+    assert.ok(near(body.center_of_mass, [0.25, 0.25, 0.25], 1, 1e-15));
+    // I = ρ (tr C − C), C = ∫ r rᵀ dV − V c cᵀ, with ∫x² dV = 1/60 and ∫xy dV = 1/120 about
+    // the origin for the unit right tetrahedron.
+    const d = 2.5 * (2 / 60 - 2 * (1 / 6) / 16), o = -2.5 * (1 / 120 - (1 / 6) / 16);
+    assert.ok(near(body.inertia_com, [[d, o, o], [o, d, o], [o, o, d]], 1, 1e-14));
+    assert.equal(body.gap_area, 0);
+  });
+
+  test('the tank against the classical divergence-theorem sums', async () => {
+    const { body } = await getJson('/api/mesh/f0/props?density=800');
+    const ref = referenceProps(readObj(tankPath), 800);
+    assert.ok(near(body.volume, ref.volume, ref.volume));
+    assert.ok(near(body.area, ref.area, ref.area));
+    assert.ok(near(body.mass, ref.mass, ref.mass));
+    assert.ok(near(body.center_of_mass, ref.center_of_mass, 1.6));
+    assert.ok(near(body.inertia_com, ref.inertia_com, ref.inertia_com[1][1]));
+    // Each principal axis is an eigenvector of the reference tensor with its moment.
+    body.principal_axes.forEach((a, i) => {
+      const Ia = ref.inertia_com.map((row) => row[0] * a[0] + row[1] * a[1] + row[2] * a[2]);
+      assert.ok(near(Ia, a.map((x) => body.principal_moments[i] * x), ref.inertia_com[1][1]));
+    });
+    assert.ok(body.principal_moments[0] <= body.principal_moments[1]);
+    assert.ok(body.principal_moments[1] <= body.principal_moments[2]);
+  });
+
+  test('bad densities are 400, unknown meshes 404', async () => {
+    for (const q of ['density=abc', 'density=-1', 'density=', 'density=1e999', 'density=nan']) {
+      const r = await fetch(new URL(`/api/mesh/f0/props?${q}`, server.url));
+      assert.equal(r.status, 400, q);
+    }
+    assert.equal((await fetch(new URL('/api/mesh/u999999/props', server.url))).status, 404);
   });
 });
 

@@ -142,3 +142,42 @@ export const tetrahedronObj = [
   'v 0 0 0', 'v 1 0 0', 'v 0 1 0', 'v 0 0 1',
   'f 1 3 2', 'f 1 2 4', 'f 1 4 3', 'f 2 3 4', '',
 ].join('\n');
+
+// Mass properties of a closed polyhedron by the classical divergence-theorem sums over the
+// tetrahedra (origin, a, b, c) of its fan-triangulated faces: an independent reference for the
+// library's PGA path. ∫ x xᵀ dV over a tetrahedron with vertices 0, a, b, c is
+// det/120 · (a aᵀ + b bᵀ + c cᵀ + s sᵀ), s = a + b + c.
+export function referenceProps({ vertices, faces }, density = 1) {
+  let volume = 0, area = 0;
+  const first = [0, 0, 0];
+  const second = [[0, 0, 0], [0, 0, 0], [0, 0, 0]];
+  const sub = (p, q) => [p[0] - q[0], p[1] - q[1], p[2] - q[2]];
+  const cross = (p, q) => [p[1] * q[2] - p[2] * q[1], p[2] * q[0] - p[0] * q[2],
+                           p[0] * q[1] - p[1] * q[0]];
+  const dot = (p, q) => p[0] * q[0] + p[1] * q[1] + p[2] * q[2];
+  for (const f of faces)
+    for (let k = 1; k + 1 < f.length; ++k) {
+      const a = vertices[f[0]], b = vertices[f[k]], c = vertices[f[k + 1]];
+      const det = dot(a, cross(b, c));
+      area += Math.hypot(...cross(sub(b, a), sub(c, a))) / 2;
+      volume += det / 6;
+      const s = [a[0] + b[0] + c[0], a[1] + b[1] + c[1], a[2] + b[2] + c[2]];
+      for (let i = 0; i < 3; ++i) {
+        first[i] += (det / 24) * s[i];
+        for (let j = 0; j < 3; ++j)
+          second[i][j] += (det / 120) * (a[i] * a[j] + b[i] * b[j] + c[i] * c[j] + s[i] * s[j]);
+      }
+    }
+  const com = first.map((x) => x / volume);
+  // Inertia about the centre of mass: ρ (tr(C) 1 − C) with C = ∫ r rᵀ dV − V c cᵀ.
+  const central = second.map((row, i) => row.map((x, j) => x - volume * com[i] * com[j]));
+  const trace = central[0][0] + central[1][1] + central[2][2];
+  const inertia = central.map((row, i) => row.map((x, j) => density * ((i === j ? trace : 0) - x)));
+  return { volume, area, mass: density * volume, center_of_mass: com, inertia_com: inertia };
+}
+
+// |a − b| ≤ tol · scale for numbers, or element-wise for nested arrays.
+export function near(actual, expected, scale, tol = 1e-9) {
+  if (Array.isArray(expected)) return expected.every((e, i) => near(actual[i], e, scale, tol));
+  return Math.abs(actual - expected) <= tol * scale;
+}

@@ -5,7 +5,9 @@
 
 #include <algorithm>
 #include <atomic>
+#include <charconv>
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
@@ -17,6 +19,8 @@
 #include "mesh_store.hpp"
 #include "mesh_view.hpp"
 #include "pgamesh/input_error.hpp"
+#include "pgamesh/mesh/mass_properties.hpp"
+#include "props_json.hpp"
 
 namespace pgamesh::viewer {
 
@@ -34,17 +38,30 @@ void send_json(httplib::Response& res, int status, const json& body) {
   res.set_content(body.dump(), "application/json; charset=utf-8");
 }
 
+// An answer whose JSON was written elsewhere (the library's JSON builders).
+void send_raw_json(httplib::Response& res, std::string body) {
+  res.status = 200;
+  res.set_header("Cache-Control", "no-store");
+  res.set_content(std::move(body), "application/json; charset=utf-8");
+}
+
+// A whole query parameter as a finite double ("1e3", "-0.5"); false for anything else.
+bool parse_number(const std::string& text, double& out) {
+  const char* end = text.data() + text.size();
+  const auto [p, ec] = std::from_chars(text.data(), end, out);
+  return ec == std::errc() && p == end && !text.empty() && std::isfinite(out);
+}
+
 void send_error(httplib::Response& res, int status, const std::string& message) {
   send_json(res, status, {{"error", message}});
 }
 
 // What a path may be asked with: "GET" (HEAD included), "POST", or nothing (unknown path).
-const std::regex kMeshRoute(R"(/api/mesh/([fu][0-9]{1,18}))");
-const std::regex kMeshGeometryRoute(R"(/api/mesh/([fu][0-9]{1,18})/geometry)");
+const std::regex kMeshRoutes(R"(/api/mesh/[fu][0-9]{1,18}(/geometry|/props)?)");
 
 std::string allowed_method(const AssetTable& assets, const std::string& path) {
   if (assets.by_url.count(path) || path == "/api/info" || path == "/api/meshes" ||
-      std::regex_match(path, kMeshRoute) || std::regex_match(path, kMeshGeometryRoute))
+      std::regex_match(path, kMeshRoutes))
     return "GET";
   if (path == "/api/upload") return "POST";
   return {};
@@ -125,7 +142,7 @@ void add_routes(httplib::Server& svr, const ServerOptions& options, const AssetT
     send_json(res, 200,
               {{"version", PGAMESH_VERSION},
                {"max_upload", options.max_upload},
-               {"features", {{"props", false}, {"check", false}, {"fuel", false}}}});
+               {"features", {{"props", true}, {"check", false}, {"fuel", false}}}});
   });
 
   svr.Get("/api/meshes", [&store](const httplib::Request&, httplib::Response& res) {
@@ -146,6 +163,26 @@ void add_routes(httplib::Server& svr, const ServerOptions& options, const AssetT
             if (auto m = find_mesh(store, req.matches[1], res)) {
               res.set_header("Cache-Control", "no-store");
               res.set_content(mesh_geometry_binary(m->mesh), "application/octet-stream");
+            }
+          });
+
+  svr.Get(R"(/api/mesh/([fu][0-9]{1,18})/props)",
+          [&store](const httplib::Request& req, httplib::Response& res) {
+            MassOptions options;
+            if (req.has_param("density")) {
+              double density = 0;
+              if (!parse_number(req.get_param_value("density"), density) || density < 0)
+                return send_error(res, 400, "density must be a finite number >= 0");
+              options.density = density;
+            }
+            if (auto m = find_mesh(store, req.matches[1], res)) {
+              try {
+                send_raw_json(res, props_json(mass_properties(m->mesh, options, &m->source)));
+              } catch (const std::invalid_argument& e) {
+                send_error(res, 422, m->name + ": " + e.what());
+              } catch (const std::out_of_range& e) {
+                send_error(res, 422, m->name + ": " + e.what());
+              }
             }
           });
 

@@ -45,3 +45,27 @@ export async function upload(file) {
   });
   return parse(response);
 }
+
+function query(params) {
+  return new URLSearchParams(Object.entries(params).map(([k, v]) => [k, String(v)])).toString();
+}
+
+// Mass properties (pgamesh props --json) at a density.
+export async function getProps(id, density) {
+  return parse(await fetch(`/api/mesh/${encodeURIComponent(id)}/props?${query({ density })}`));
+}
+
+// The boundary edges of an open mesh as segments [[ax, ay, az, bx, by, bz], ...] (capped).
+export async function getBoundary(id) {
+  return parse(await fetch(`/api/mesh/${encodeURIComponent(id)}/boundary`));
+}
+
+// The fuel (pgamesh fuel --json) for an attitude and either {level} or {volume}.
+export async function getFuel(id, params) {
+  return parse(await fetch(`/api/mesh/${encodeURIComponent(id)}/fuel?${query(params)}`));
+}
+
+// The gauge table for an attitude: n + 1 levels from the lowest to the highest point.
+export async function getFuelTable(id, params) {
+  return parse(await fetch(`/api/mesh/${encodeURIComponent(id)}/fuel/table?${query(params)}`));
+}

@@ -2,9 +2,22 @@
 // the panels from the server's API.
 import * as api from './api.js';
 import { View, webglAvailable } from './scene.js';
+import { FuelPanel } from './fuel_panel.js';
 import { fillMeshPanel, showMessage, clearFigures } from './panels.js';
+import { PropsPanel } from './props_panel.js';
 
 const state = { info: null, mesh: null, view: null };
+
+// A panel's own status line: null clears it, text shows it as a problem of that panel.
+function panelStatus(id) {
+  return (text) => {
+    const el = document.getElementById(id);
+    el.textContent = text || '';
+    el.classList.toggle('problem', !!text);
+  };
+}
+const props = new PropsPanel(state, panelStatus('props-status'));
+const fuel = new FuelPanel(state, panelStatus('fuel-status'));
 
 function setState(s) {
   document.body.dataset.state = s;
@@ -21,6 +34,10 @@ async function openMesh(load) {
     clearFigures(document.getElementById('side'));
     fillMeshPanel(summary);
     if (state.view) state.view.showMesh(summary, geometry);
+    const work = [];
+    if (state.info.features.props) work.push(props.update());
+    if (state.info.features.fuel) work.push(fuel.reset());
+    await Promise.all(work);
     setState('ready');
   } catch (e) {
     showMessage(e.message);
@@ -86,10 +103,15 @@ async function start() {
   }
   try {
     state.info = await api.getInfo();
-    document.getElementById('props-status').textContent = state.info.features.props ? ''
-      : 'Not available: this server was built without the mass-properties library.';
-    document.getElementById('fuel-status').textContent = state.info.features.fuel ? ''
-      : 'Not available: this server was built without the fuel library.';
+    const { features } = state.info;
+    document.getElementById('props-body').hidden = !features.props;
+    document.getElementById('fuel-body').hidden = !features.fuel;
+    if (!features.props)
+      document.getElementById('props-status').textContent =
+        'Not available: this server was built without mass properties.';
+    if (!features.fuel)
+      document.getElementById('fuel-status').textContent =
+        'Not available: this server was built without fuel gauging.';
     const meshes = await api.listMeshes();
     const select = document.getElementById('mesh-select');
     const none = new Option('—', '');
@@ -109,3 +131,4 @@ async function start() {
 }
 
 start();
+window.pgameshViewer = state;  // for the tests and the console

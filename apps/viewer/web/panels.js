@@ -3,6 +3,7 @@
 
 // A number with 6 significant digits for display (full precision stays in data-value).
 export function fmt(x) {
+  if (x === null) return '—';
   if (typeof x !== 'number') return String(x);
   if (x === 0) return '0';
   const a = Math.abs(x);
@@ -10,12 +11,21 @@ export function fmt(x) {
   return x.toExponential(5);
 }
 
+// Entries below 1e-12 of the largest one are rounding noise of a zero: shown as 0 (the exact
+// value stays in data-value).
+function snap(values) {
+  const big = Math.max(...values.map((x) => (typeof x === 'number' ? Math.abs(x) : 0)));
+  return (x) => (typeof x === 'number' && Math.abs(x) < 1e-12 * big ? 0 : x);
+}
+
 export function fmtVector(v) {
-  return `(${v.map(fmt).join(', ')})`;
+  const s = snap(v);
+  return `(${v.map((x) => fmt(s(x))).join(', ')})`;
 }
 
 export function fmtMatrix(m) {
-  return m.map((row) => `[${row.map(fmt).join(', ')}]`).join('\n');
+  const s = snap(m.flat());
+  return m.map((row) => `[${row.map((x) => fmt(s(x))).join(', ')}]`).join('\n');
 }
 
 // Sets the figure with this id: shown text and the exact value.

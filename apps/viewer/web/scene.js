@@ -6,9 +6,11 @@ import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 export class View {
   constructor(container) {
     this.container = container;
-    this.renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
+    this.renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true,
+                                               stencil: true });
     this.renderer.setPixelRatio(window.devicePixelRatio);
     this.renderer.setClearColor(0xf3f5f9);
+    this.renderer.localClippingEnabled = true;  // the fuel is the tank clipped by its plane
     container.appendChild(this.renderer.domElement);
 
     this.scene = new THREE.Scene();
@@ -73,6 +75,7 @@ export class View {
     g.setAttribute('position', new THREE.BufferAttribute(geometry.positions, 3));
     g.setIndex(new THREE.BufferAttribute(geometry.indices, 1));
     g.computeVertexNormals();
+    this.geometry = g;
     const group = new THREE.Group();
     group.add(new THREE.Mesh(g, new THREE.MeshStandardMaterial({
       color: 0x8fa6c8, metalness: 0.1, roughness: 0.7, side: THREE.FrontSide,
@@ -100,6 +103,48 @@ export class View {
     this.camera.updateProjectionMatrix();
     this.controls.update();
     this.render();
+  }
+
+  // The fuel of a closed tank below the plane up·x = level (model coordinates): the wetted wall
+  // is the tank drawn clipped by the plane, the free surface a cap drawn where the clipped tank's
+  // back faces outnumber its front faces (stencil parity: inside the closed surface). Nothing is
+  // measured here; the figures come from the library.
+  fuel(up, level) {
+    const n = new THREE.Vector3(up[0], up[1], up[2]).normalize();
+    // three.js keeps points with n'·p + c >= 0: n' = -up, c = level - up·origin keeps up·x <= level.
+    const clip = new THREE.Plane(n.clone().negate(), level - n.dot(this.origin));
+    const group = new THREE.Group();
+    const wall = new THREE.MeshStandardMaterial({
+      color: 0xd9a21b, side: THREE.DoubleSide, clippingPlanes: [clip], metalness: 0.0,
+      roughness: 0.6, polygonOffset: true, polygonOffsetFactor: 1, polygonOffsetUnits: 1 });
+    group.add(new THREE.Mesh(this.geometry, wall));
+
+    const stencilPass = (side, op) => new THREE.MeshBasicMaterial({
+      side, clippingPlanes: [clip], colorWrite: false, depthWrite: false, depthTest: false,
+      stencilWrite: true, stencilFunc: THREE.AlwaysStencilFunc, stencilFail: op,
+      stencilZFail: op, stencilZPass: op });
+    const back = new THREE.Mesh(this.geometry, stencilPass(THREE.BackSide,
+                                                          THREE.IncrementWrapStencilOp));
+    const front = new THREE.Mesh(this.geometry, stencilPass(THREE.FrontSide,
+                                                           THREE.DecrementWrapStencilOp));
+    back.renderOrder = front.renderOrder = 1;
+    group.add(back, front);
+
+    const cap = new THREE.Mesh(new THREE.PlaneGeometry(4 * this.size, 4 * this.size),
+                               new THREE.MeshStandardMaterial({
+                                 color: 0xf2c14e, metalness: 0.0, roughness: 0.4,
+                                 side: THREE.DoubleSide, stencilWrite: true, stencilRef: 0,
+                                 stencilFunc: THREE.NotEqualStencilFunc,
+                                 stencilFail: THREE.ReplaceStencilOp,
+                                 stencilZFail: THREE.ReplaceStencilOp,
+                                 stencilZPass: THREE.ReplaceStencilOp }));
+    // The cap lies in the plane, centred on the foot of the drawing origin (scene 0,0,0).
+    cap.position.copy(n.clone().multiplyScalar(level - n.dot(this.origin)));
+    cap.quaternion.setFromUnitVectors(new THREE.Vector3(0, 0, 1), n);
+    cap.renderOrder = 2;
+    cap.onAfterRender = (renderer) => renderer.clearStencil();
+    group.add(cap);
+    return group;
   }
 
   // A sphere marker at model point p, sized relative to the mesh.
