@@ -315,8 +315,20 @@ void Algebra::set_blade_names(const std::vector<std::string>& names) {
     custom[parsed->first] = nm;
     signs[parsed->first] = parsed->second;
   }
+  std::vector<int> rank(std::size_t{1} << n_, static_cast<int>(names.size()));
+  for (std::size_t i = 0; i < names.size(); ++i)
+    rank[parse_blade(names[i])->first] = static_cast<int>(i);
   custom_names_ = std::move(custom);
   custom_signs_ = std::move(signs);
+  custom_rank_ = std::move(rank);
+}
+
+bool Algebra::display_before(BladeMask a, BladeMask b) const {
+  if (!custom_rank_.empty() && custom_rank_[a] != custom_rank_[b])
+    return custom_rank_[a] < custom_rank_[b];
+  if (grade_of(a) != grade_of(b)) return grade_of(a) < grade_of(b);
+  const BladeMask d = a ^ b;
+  return (a & d & (~d + 1)) != 0;  // the lowest differing factor comes first
 }
 
 std::vector<std::pair<std::string, double>> Algebra::named_coefficients(

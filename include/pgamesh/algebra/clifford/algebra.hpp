@@ -68,6 +68,10 @@ class Algebra {
   // order (e21 = −e12) when concatenated names apply. Returns nullopt when it is not a blade.
   std::optional<std::pair<BladeMask, double>> parse_blade(std::string_view name) const;
 
+  // Printing order: the custom basis order when blade names were given, else by grade, then
+  // lexicographically by factor indices (e12, e13, e14, e23, …).
+  bool display_before(BladeMask a, BladeMask b) const;
+
   // Named coefficients of A in ascending blade order (name, coefficient of the named blade).
   std::vector<std::pair<std::string, double>> named_coefficients(const Multivector& a) const;
 
@@ -103,6 +107,7 @@ class Algebra {
   bool concatenated_names_ = false;
   std::vector<std::string> custom_names_;  // indexed by mask (empty when none)
   std::vector<double> custom_signs_;
+  std::vector<int> custom_rank_;
   std::vector<std::pair<std::string, int>> aliases_;
 };
 
