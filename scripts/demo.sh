@@ -6,4 +6,4 @@ cd "$(dirname "$0")/.."
 scripts/setup.sh build
 cmake --preset release -DPGAMESH_BUILD_TESTS=OFF -DPGAMESH_BUILD_BENCH=OFF > /dev/null
 cmake --build --preset release -j "$(nproc)" --target pgamesh_cli
-build/release/pgamesh demo
+build/release/pgamesh props data/meshes/bunny.stl

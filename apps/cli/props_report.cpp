@@ -1,0 +1,85 @@
+#include "props_report.hpp"
+
+#include "pgamesh/mesh/mapped_file.hpp"
+#include "pgamesh/mesh/read_mesh.hpp"
+#include "pgamesh/mesh/stl_binary.hpp"
+#include "pgamesh/mesh/stl_mass_properties.hpp"
+
+namespace pgamesh::cli {
+
+const char* const inertia_convention =
+    "inertia tensor I = integral of rho (|r|^2 1 - r r^T) dV: diagonal = moments of inertia, "
+    "off-diagonal entries = minus the products of inertia (I_xy = -integral of x y dm); "
+    "principal moments ascending, principal_axes row i = unit axis of moment i, right-handed, "
+    "axes 1 and 2 with their largest-magnitude component positive";
+
+namespace {
+
+// Whether the figures describe a solid, and why not.
+void judge(PropsReport& r) {
+  if (r.topology) {
+    r.meaningful = r.topology->volume_valid;
+    if (!r.topology->volume_valid)
+      r.reasons.insert(r.reasons.end(), r.topology->notes.begin(), r.topology->notes.end());
+  }
+  if (r.mass.volume == 0) {
+    r.meaningful = false;
+    r.reasons.push_back("zero volume: no centre of mass or inertia");
+  } else if (r.mass.volume < 0) {
+    r.meaningful = false;
+    r.reasons.push_back(
+        "negative volume: the faces are oriented inward (clockwise seen from outside); the "
+        "figures are those of the mesh as given, not abs()'d (pgamesh check --fix-orientation "
+        "repairs the orientation)");
+  }
+  if (!r.topology && r.meaningful.value_or(true))
+    r.reasons.push_back("topology not computed (--no-topology): closedness unknown");
+}
+
+}  // namespace
+
+PropsReport props_of_mesh(const Mesh& mesh, const MeshSource& source, const PropsOptions& options) {
+  PropsReport r;
+  r.file = source.path;
+  r.format = source.format;
+  r.single_precision = source.single_precision;
+  r.density_from_mass = options.mass.mass.has_value();
+  r.mass = mass_properties(mesh, options.mass, &source);
+  r.warnings = source.warnings;
+  r.warnings.insert(r.warnings.end(), r.mass.warnings.begin(), r.mass.warnings.end());
+  if (options.topology) r.topology = analyze_topology(mesh, options.topology_options);
+  judge(r);
+  return r;
+}
+
+PropsReport props_of_bytes(std::span<const char> bytes, const std::string& name,
+                           const PropsOptions& options) {
+  const bool stl_allowed = options.format == MeshFormat::unknown ||
+                           options.format == MeshFormat::stl_binary ||
+                           options.format == MeshFormat::stl_ascii;
+  if (!options.topology && stl_allowed) {
+    if (const auto view = binary_stl_view(bytes, name)) {
+      PropsReport r;
+      r.file = name;
+      r.format = MeshFormat::stl_binary;
+      r.single_precision = true;
+      r.streamed = true;
+      r.density_from_mass = options.mass.mass.has_value();
+      r.mass = binary_stl_mass_properties(*view, name, options.mass);
+      r.warnings = r.mass.warnings;
+      judge(r);
+      return r;
+    }
+  }
+  MeshSource source;
+  const Mesh mesh = read_mesh_bytes(bytes, name, &source, options.format);
+  source.path = name;
+  return props_of_mesh(mesh, source, options);
+}
+
+PropsReport props_of_file(const std::string& path, const PropsOptions& options) {
+  const MappedFile file = MappedFile::open(path);
+  return props_of_bytes(file.bytes(), path, options);
+}
+
+}  // namespace pgamesh::cli

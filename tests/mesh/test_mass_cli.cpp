@@ -1,0 +1,238 @@
+// `pgamesh props` end to end: runs the built CLI (PGAMESH_CLI_PATH) on golden and real meshes,
+// parses its JSON and checks it against golden/mesh_props.json; URDF/MJCF output; errors.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "support/golden.hpp"
+#include "support/solids.hpp"
+#include "support/stl_bytes.hpp"
+
+using pgamesh::test::flatten;
+using pgamesh::test::json;
+using pgamesh::test::near_group;
+using pgamesh::test::near_scalar;
+
+namespace {
+
+struct CliRun {
+  int status = -1;
+  std::string out, err;
+};
+
+// Runs `pgamesh ARGS` with stdout and stderr captured in files named after the running test (ctest
+// runs the cases of this file in parallel).
+CliRun run_cli(const std::string& args) {
+  const auto dir = std::filesystem::temp_directory_path();
+  const std::string stem = std::string("pgamesh_props_") +
+                           ::testing::UnitTest::GetInstance()->current_test_info()->name() + "_" +
+                           std::to_string(::getpid());
+  const std::string out = (dir / (stem + ".out")).string();
+  const std::string err = (dir / (stem + ".err")).string();
+  const std::string cmd =
+      std::string("\"") + PGAMESH_CLI_PATH + "\" " + args + " > \"" + out + "\" 2> \"" + err + "\"";
+  CliRun r;
+  const int raw = std::system(cmd.c_str());
+  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  const auto slurp = [](const std::string& path) {
+    std::ifstream in(path);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  r.out = slurp(out);
+  r.err = slurp(err);
+  std::filesystem::remove(out);
+  std::filesystem::remove(err);
+  return r;
+}
+
+std::string golden_mesh(const std::string& name) {
+  return std::string(PGAMESH_GOLDEN_DIR) + "/meshes/" + name;
+}
+
+const json* golden_case(const json& file, const std::string& id) {
+  for (const json& c : file["cases"])
+    if (c["id"] == id) return &c;
+  return nullptr;
+}
+
+}  // namespace
+
+TEST(MassCli, JsonMatchesGolden) {
+  const json file = pgamesh::test::load_golden("mesh_props.json");
+  for (const char* id : {"unit_cube", "ellipsoid_L3", "torus", "ellipsoid_L3_far"}) {
+    SCOPED_TRACE(id);
+    const json* c = golden_case(file, id);
+    ASSERT_NE(c, nullptr);
+    const CliRun r = run_cli("props \"" + golden_mesh(std::string(id) + ".obj") + "\" --json");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const json got = json::parse(r.out);
+    const json& e = (*c)["expected"];
+    const auto tol = pgamesh::test::tolerance_of(file, *c);
+    EXPECT_EQ(got["triangles"], e["triangles"]);
+    EXPECT_EQ(got["vertices"], e["vertices"]);
+    EXPECT_EQ(got["closed"], e["closed"]);
+    EXPECT_EQ(got["boundary_edges"], e["boundary_edges"]);
+    EXPECT_EQ(got["nonmanifold_edges"], e["nonmanifold_edges"]);
+    EXPECT_EQ(got["orientation_consistent"], e["orientation_consistent"]);
+    for (const char* k : {"area", "volume", "density", "mass", "gap_area"}) {
+      EXPECT_TRUE(near_scalar(got[k].get<double>(), e[k].get<double>(), tol)) << k;
+    }
+    for (const char* k : {"center_of_mass", "inertia_com", "inertia_origin", "principal_moments"}) {
+      EXPECT_TRUE(near_group(flatten(got[k]), flatten(e[k]), tol)) << k;
+    }
+    if (!e["principal_axes"].is_null()) {
+      EXPECT_TRUE(
+          near_group(flatten(got["principal_axes"]), flatten(e["principal_axes"]), {1e-9, 1e-9}));
+    }
+    EXPECT_EQ(got["principal_degenerate"], e["principal_axes"].is_null());
+    EXPECT_EQ(got["meaningful"], true);
+    // Products of inertia are named as such: minus the tensor's off-diagonals.
+    EXPECT_DOUBLE_EQ(got["products_of_inertia_com"]["xy"].get<double>(),
+                     -got["inertia_com"][0][1].get<double>());
+    EXPECT_NE(got["convention"].get<std::string>().find("minus the products of inertia"),
+              std::string::npos);
+  }
+}
+
+TEST(MassCli, DensityAndMassOptions) {
+  const std::string cube = "props \"" + golden_mesh("unit_cube.obj") + "\" --json";
+  const json d = json::parse(run_cli(cube + " --density 2.5").out);
+  EXPECT_DOUBLE_EQ(d["mass"].get<double>(), 2.5);
+  EXPECT_DOUBLE_EQ(d["inertia_com"][0][0].get<double>(), 2.5 / 6);
+  const json m = json::parse(run_cli(cube + " --mass 4").out);
+  EXPECT_DOUBLE_EQ(m["density"].get<double>(), 4);
+  EXPECT_EQ(m["density_source"], "mass");
+  const CliRun both = run_cli(cube + " --mass 4 --density 2");
+  EXPECT_EQ(both.status, 2);
+  EXPECT_NE(both.err.find("not both"), std::string::npos);
+}
+
+TEST(MassCli, OpenMeshIsNotMeaningful) {
+  // The unit cube without its top quad, written as OBJ: gap = missing area 1.
+  const auto path = std::filesystem::temp_directory_path() /
+                    ("pgamesh_props_open_" + std::to_string(::getpid()) + ".obj");
+  {
+    std::ofstream out(path);
+    out << "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+        << "f 1 4 3 2\nf 1 2 6 5\nf 3 4 8 7\nf 2 3 7 6\nf 1 5 8 4\n";
+  }
+  const CliRun r = run_cli("props \"" + path.string() + "\" --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const json got = json::parse(r.out);
+  EXPECT_EQ(got["closed"], false);
+  EXPECT_EQ(got["boundary_edges"], 4);
+  EXPECT_DOUBLE_EQ(got["gap_area"].get<double>(), 1);
+  EXPECT_EQ(got["meaningful"], false);
+  EXPECT_FALSE(got["meaningful_reasons"].empty());
+  const CliRun text = run_cli("props \"" + path.string() + "\"");
+  EXPECT_NE(text.out.find("NOT MEANINGFUL"), std::string::npos);
+  std::filesystem::remove(path);
+}
+
+TEST(MassCli, StreamedStlMatchesTopologyPath) {
+  const pgamesh::Mesh m = pgamesh::test::uv_sphere(1.5, 16, 24);
+  const auto path = std::filesystem::temp_directory_path() /
+                    ("pgamesh_props_sphere_" + std::to_string(::getpid()) + ".stl");
+  {
+    const std::vector<char> bytes = pgamesh::test::binary_stl_bytes(m);
+    std::ofstream out(path, std::ios::binary);
+    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  }
+  const json fast = json::parse(run_cli("props \"" + path.string() + "\" --json --fast").out);
+  const json full = json::parse(run_cli("props \"" + path.string() + "\" --json").out);
+  EXPECT_EQ(fast["streamed"], true);
+  EXPECT_EQ(full["streamed"], false);
+  EXPECT_TRUE(fast["closed"].is_null());
+  EXPECT_TRUE(fast["meaningful"].is_null());
+  EXPECT_EQ(full["closed"], true);
+  EXPECT_EQ(full["vertices"], m.vertices.size());  // welded
+  EXPECT_EQ(fast["input_vertices"], 3 * fast["triangles"].get<int>());
+  EXPECT_DOUBLE_EQ(fast["volume"].get<double>(), full["volume"].get<double>());
+  EXPECT_TRUE(
+      near_group(flatten(fast["inertia_com"]), flatten(full["inertia_com"]), {1e-15, 1e-15}));
+  std::filesystem::remove(path);
+}
+
+TEST(MassCli, UrdfAndMjcf) {
+  const std::string box = "props \"" + golden_mesh("unit_cube.obj") + "\" --density 2";
+  const CliRun urdf = run_cli(box + " --urdf");
+  ASSERT_EQ(urdf.status, 0);
+  EXPECT_NE(urdf.out.find("<inertial>"), std::string::npos);
+  EXPECT_NE(urdf.out.find("<origin xyz=\"0.5 0.5 0.5\""), std::string::npos);
+  EXPECT_NE(urdf.out.find("<mass value=\"2\"/>"), std::string::npos);
+  EXPECT_NE(urdf.out.find("ixx=\"0.33333333333333"), std::string::npos);
+  EXPECT_NE(urdf.out.find("-integral x y dm"), std::string::npos);  // convention stated
+  const CliRun mjcf = run_cli(box + " --mjcf");
+  ASSERT_EQ(mjcf.status, 0);
+  EXPECT_NE(mjcf.out.find("<inertial pos=\"0.5 0.5 0.5\""), std::string::npos);
+  EXPECT_NE(mjcf.out.find("diaginertia=\"0.33333333333333"), std::string::npos);
+  EXPECT_NE(mjcf.out.find("quat=\""), std::string::npos);
+  // XML comments must not contain "--".
+  const auto body = mjcf.out.substr(4, mjcf.out.find("-->") - 4);
+  EXPECT_EQ(body.find("--"), std::string::npos);
+}
+
+TEST(MassCli, InwardMeshReportsNegativeVolume) {
+  const std::string dir = pgamesh::test::shared_meshes_dir();
+  if (dir.empty()) GTEST_SKIP() << "../shared/meshes not found";
+  const CliRun r = run_cli("props \"" + dir + "/geomview/mushroom.off\" --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const json got = json::parse(r.out);
+  EXPECT_LT(got["volume"].get<double>(), 0);
+  EXPECT_EQ(got["meaningful"], false);
+}
+
+TEST(MassCli, ErrorsNameTheFileAndPosition) {
+  const std::string dir = pgamesh::test::shared_meshes_dir();
+  if (!dir.empty()) {
+    const CliRun r = run_cli("props \"" + dir + "/stl-models/incorrectFaceCounter.bin.stl\"");
+    EXPECT_NE(r.status, 0);
+    EXPECT_NE(r.err.find("incorrectFaceCounter.bin.stl"), std::string::npos);
+    EXPECT_NE(r.err.find("byte"), std::string::npos);
+    EXPECT_TRUE(r.out.empty());
+    const CliRun fast =
+        run_cli("props \"" + dir + "/stl-models/incorrectFaceCounter.bin.stl\" --fast --json");
+    EXPECT_NE(fast.status, 0);
+    EXPECT_NE(fast.err.find("byte"), std::string::npos);
+  }
+  const CliRun missing = run_cli("props /nonexistent/part.stl");
+  EXPECT_EQ(missing.status, 1);
+  EXPECT_NE(missing.err.find("/nonexistent/part.stl"), std::string::npos);
+  EXPECT_EQ(run_cli("props").status, 2);
+  EXPECT_EQ(run_cli("props a.stl --density").status, 2);
+  EXPECT_EQ(run_cli("props a.stl --density nan").status, 2);
+  EXPECT_EQ(run_cli("props a.stl --bogus").status, 2);
+}
+
+TEST(MassCli, ReadableOutputStatesTheConvention) {
+  const CliRun r = run_cli("props \"" + golden_mesh("ellipsoid_L3.obj") + "\" --about-origin");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("MINUS the products of inertia"), std::string::npos);
+  EXPECT_NE(r.out.find("inertia about the origin"), std::string::npos);
+  EXPECT_NE(r.out.find("principal moments (ascending)"), std::string::npos);
+  EXPECT_NE(r.out.find("closed"), std::string::npos);
+}
+
+TEST(MassCli, MjcfQuaternionTurnsTheMeshFrameOntoThePrincipalAxes) {
+  const std::string mesh = "props \"" + golden_mesh("ellipsoid_L3_far.obj") + "\"";
+  const json got = json::parse(run_cli(mesh + " --json").out);
+  const std::string mjcf = run_cli(mesh + " --mjcf").out;
+  const auto at = mjcf.find("quat=\"");
+  ASSERT_NE(at, std::string::npos);
+  std::array<double, 4> q{};
+  std::sscanf(mjcf.c_str() + at + 6, "%lf %lf %lf %lf", &q[0], &q[1], &q[2], &q[3]);
+  // Hamilton rotation of e_i by (w, x, y, z): column i of the rotation matrix.
+  const double w = q[0], x = q[1], y = q[2], z = q[3];
+  const double r[3][3] = {{1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)},
+                          {2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)},
+                          {2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)}};
+  for (int i = 0; i < 3; ++i)
+    for (int k = 0; k < 3; ++k)
+      EXPECT_NEAR(r[k][i], got["principal_axes"][i][k].get<double>(), 1e-12) << i << "," << k;
+}
