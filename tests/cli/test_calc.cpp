@@ -2,6 +2,7 @@
 // products, the 2-D polygon and the 4-D 5-cell), scripts with `let` on stdin, and the errors for
 // bad syntax, unknown blades and hostile input (column numbers, exit codes, no crash).
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <array>
 #include <cstdio>
@@ -32,8 +33,11 @@ std::string quote(const std::string& s) {
 
 // Runs `pgamesh calc ARGS` with `input` on stdin.
 CalcRun calc(const std::string& args, const std::string& input = "") {
-  const std::string dir = ::testing::TempDir();
-  const std::string in = dir + "/calc_in.txt", err = dir + "/calc_err.txt";
+  // one file pair per test case: ctest runs the cases of this executable in parallel
+  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  const std::string base =
+      ::testing::TempDir() + "/pgamesh_calc_" + info->name() + "_" + std::to_string(getpid());
+  const std::string in = base + ".in", err = base + ".err";
   std::ofstream(in) << input;
   const std::string cmd =
       std::string(PGAMESH_CLI_PATH) + " calc " + args + " < " + in + " 2> " + err;
@@ -45,8 +49,12 @@ CalcRun calc(const std::string& args, const std::string& input = "") {
     const int st = pclose(p);
     r.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
   }
-  std::ifstream e(err);
-  r.err.assign(std::istreambuf_iterator<char>(e), std::istreambuf_iterator<char>());
+  {
+    std::ifstream e(err);
+    r.err.assign(std::istreambuf_iterator<char>(e), std::istreambuf_iterator<char>());
+  }
+  std::remove(in.c_str());
+  std::remove(err.c_str());
   return r;
 }
 
