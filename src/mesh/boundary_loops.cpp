@@ -36,25 +36,48 @@ std::vector<BoundaryLoop> boundary_loops(const Mesh& mesh, const WeldMap& weld,
   auto position = [&](std::uint32_t w) {
     return mesh.vertices[weld.representative[w]] - reference;
   };
-  auto trace = [&](std::uint32_t first) {
+  auto emit = [&](std::vector<std::uint32_t>::const_iterator begin,
+                  std::vector<std::uint32_t>::const_iterator end, bool closed) {
     BoundaryLoop loop;
+    loop.half_edges.assign(begin, end);
+    loop.closed = closed;
     EdgeChainSums sums;
-    std::uint32_t i = first;
-    for (;;) {
-      used[i] = 1;
-      const std::uint32_t c = sides[i];
-      loop.half_edges.push_back(c);
-      add_edge(sums, position(tail(c)), position(head(c)));
-      const std::uint32_t v = head(c);
-      while (cursor[v] < out_start[v + 1] && used[out_side[cursor[v]]]) ++cursor[v];
-      if (cursor[v] == out_start[v + 1]) break;
-      i = out_side[cursor[v]];
-    }
-    loop.closed = head(loop.half_edges.back()) == tail(loop.half_edges.front());
+    for (std::uint32_t c : loop.half_edges) add_edge(sums, position(tail(c)), position(head(c)));
     loop.vector_area = vector_area(sums);
     loop.area = enclosed_area(sums);
     loop.perimeter = sums.length;
     loops.push_back(std::move(loop));
+  };
+
+  // Follows unused sides from `first`. Whenever the path comes back to a vertex it has already
+  // passed, the sides since then form a simple cycle and become a loop of their own: two holes
+  // touching at a vertex are two loops, not one figure-eight.
+  constexpr std::uint32_t none = no_edge;
+  std::vector<std::uint32_t> path_index(n_vertices, none);  // vertex → index of its side in path
+  std::vector<std::uint32_t> path;
+  auto trace = [&](std::uint32_t first) {
+    path.clear();
+    std::uint32_t i = first;
+    for (;;) {
+      used[i] = 1;
+      const std::uint32_t c = sides[i];
+      path_index[tail(c)] = static_cast<std::uint32_t>(path.size());
+      path.push_back(c);
+      const std::uint32_t v = head(c);
+      if (path_index[v] != none) {
+        const std::uint32_t k = path_index[v];
+        for (std::size_t j = k; j < path.size(); ++j) path_index[tail(path[j])] = none;
+        emit(path.begin() + k, path.end(), true);
+        path.resize(k);
+      }
+      while (cursor[v] < out_start[v + 1] && used[out_side[cursor[v]]]) ++cursor[v];
+      if (cursor[v] == out_start[v + 1]) break;
+      i = out_side[cursor[v]];
+    }
+    if (!path.empty()) {  // an open chain (boundary in- and out-degrees differ somewhere)
+      for (std::uint32_t c : path) path_index[tail(c)] = none;
+      emit(path.begin(), path.end(), false);
+    }
   };
 
   for (std::uint32_t i = 0; i < sides.size(); ++i) {

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "pgamesh/geometry/body_moments.hpp"
+#include "pgamesh/geometry/bounding_box.hpp"
 #include "pgamesh/geometry/polygon_face.hpp"
 #include "pgamesh/mesh/components.hpp"
 #include "pgamesh/mesh/edges.hpp"
@@ -88,19 +89,13 @@ OrientationFix fix_orientation(Mesh& mesh, const OrientationOptions& options) {
     }
 
     // Signed volume with the walk's flips, about the component's bounding-box centre (ERRATA §6).
-    constexpr double inf = std::numeric_limits<double>::infinity();
-    Vec3d lo{inf, inf, inf}, hi{-inf, -inf, -inf};
+    Box3 box;
     for (std::uint32_t i = comp_start[k]; i < comp_start[k + 1]; ++i) {
       const std::uint32_t f = comp_faces[i];
-      for (std::uint32_t c = mesh.face_offsets[f]; c < mesh.face_offsets[f + 1]; ++c) {
-        const Vec3d p = mesh.vertices[mesh.corners[c]];
-        for (int a = 0; a < 3; ++a) {
-          lo[a] = std::min(lo[a], p[a]);
-          hi[a] = std::max(hi[a], p[a]);
-        }
-      }
+      for (std::uint32_t c = mesh.face_offsets[f]; c < mesh.face_offsets[f + 1]; ++c)
+        box.add(mesh.vertices[mesh.corners[c]]);
     }
-    const Vec3d ref = 0.5 * (lo + hi);
+    const Vec3d ref = box.centre();
     BoundarySums sums;
     std::size_t flipped = 0;
     for (std::uint32_t i = comp_start[k]; i < comp_start[k + 1]; ++i) {

@@ -11,6 +11,7 @@
 #include "pgamesh/geometry/polygon_face.hpp"
 #include "pgamesh/mesh/components.hpp"
 #include "pgamesh/mesh/duplicate_faces.hpp"
+#include "pgamesh/mesh/reference_point.hpp"
 #include "pgamesh/mesh/weld.hpp"
 
 namespace pgamesh {
@@ -33,23 +34,6 @@ void check_mesh_structure(const Mesh& mesh) {
 
 namespace {
 
-// The centre of the bounding box of the vertices: the reference point about which every sum is
-// accumulated (ERRATA §6). Non-finite coordinates are skipped so that one bad vertex does not
-// poison every other face's digits.
-Vec3d bounding_box_centre(const std::vector<Vec3d>& v) {
-  constexpr double inf = std::numeric_limits<double>::infinity();
-  Vec3d lo{inf, inf, inf}, hi{-inf, -inf, -inf};
-  for (const Vec3d& p : v)
-    for (int k = 0; k < 3; ++k)
-      if (std::isfinite(p[k])) {
-        lo[k] = std::min(lo[k], p[k]);
-        hi[k] = std::max(hi[k], p[k]);
-      }
-  Vec3d c{};
-  for (int k = 0; k < 3; ++k) c[k] = lo[k] <= hi[k] ? 0.5 * (lo[k] + hi[k]) : 0.0;
-  return c;
-}
-
 std::string format_double(double x) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.6g", x);
@@ -70,10 +54,14 @@ void write_notes(TopologyReport& r) {
     r.notes.push_back("orientation inconsistent: " + n(r.inconsistent_edges) +
                       " edges are used twice in the same direction; volume, centre of mass and "
                       "inertia are not meaningful (--fix-orientation repairs this)");
-  if (r.duplicated_faces > 0)
+  if (r.duplicated_area_faces > 0)
     r.notes.push_back("duplicated faces: " + n(r.duplicated_faces) +
                       " faces repeat an earlier face's vertices; their volume counts twice or "
                       "cancels, so volume, centre of mass and inertia are not meaningful");
+  else if (r.duplicated_faces > 0)
+    r.notes.push_back("duplicated faces: " + n(r.duplicated_faces) +
+                      " faces repeat an earlier face's vertices, all with zero area: no effect on "
+                      "area or volume");
   if (r.nonmanifold_edges > 0)
     r.notes.push_back("non-manifold: " + n(r.nonmanifold_edges) +
                       " edges are shared by more than two faces; the volume is the sum over the "
@@ -99,6 +87,7 @@ TopologyReport analyze_topology(const Mesh& mesh, const TopologyOptions& options
   const std::size_t cap = options.list_cap;
   r.faces = face_count;
   r.input_vertices = mesh.vertices.size();
+  r.area_threshold = options.area_threshold;
 
   // Weld, then describe every corner by its welded vertex.
   const WeldMap weld = weld_map(mesh.vertices, options.weld_tolerance);
@@ -129,7 +118,7 @@ TopologyReport analyze_topology(const Mesh& mesh, const TopologyOptions& options
 
   // Faces: the boundary sums (area, volume, Σ F) about the reference point, and the degenerate
   // ones.
-  r.reference_point = bounding_box_centre(mesh.vertices);
+  r.reference_point = reference_point(mesh);
   const Vec3d ref = r.reference_point;
   auto welded_position = [&](std::uint32_t c) {
     return mesh.vertices[weld.representative[welded_corner[c]]];
@@ -137,6 +126,7 @@ TopologyReport analyze_topology(const Mesh& mesh, const TopologyOptions& options
   std::vector<std::uint8_t> collapsed(face_count, 0);
   for (std::uint32_t f : edges.collapsed_faces) collapsed[f] = 1;
   r.collapsed_faces = edges.collapsed_faces.size();
+  std::vector<std::uint8_t> zero_face(face_count, 0);
   BoundarySums total;
   for (std::size_t f = 0; f < face_count; ++f) {
     const std::uint32_t begin = mesh.face_offsets[f], k = mesh.face_offsets[f + 1] - begin;
@@ -163,6 +153,7 @@ TopologyReport analyze_topology(const Mesh& mesh, const TopologyOptions& options
       }
       small = own_area <= options.area_threshold * longest2;
     }
+    zero_face[f] = zero ? 1 : 0;
     if (!zero && !small) continue;
     FaceLocation loc;
     loc.face = static_cast<std::uint32_t>(f);
@@ -184,23 +175,7 @@ TopologyReport analyze_topology(const Mesh& mesh, const TopologyOptions& options
   // About the origin: a carrier built from a − ref has e0 = −n·(a − ref) = e0(origin) + n·ref.
   r.carrier_sum.e0 -= dot(total.carrier_sum.normal(), ref);
 
-  // The range of V(q) over the vertices q: V is affine in q, so its extremes over the mesh's convex
-  // hull are at vertices (gap.hpp).
   r.volume_min = r.volume_max = r.volume;
-  if (r.gap_area > 0) {
-    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-    for (std::uint32_t w = 0; w < r.vertices; ++w) {
-      const double v = volume_about(total, mesh.vertices[weld.representative[w]] - ref);
-      if (!std::isfinite(v)) continue;
-      lo = std::min(lo, v);
-      hi = std::max(hi, v);
-    }
-    if (lo <= hi) {
-      r.volume_min = lo;
-      r.volume_max = hi;
-    }
-  }
-
   // Edges: boundary, non-manifold, inconsistently oriented.
   auto edge_location = [&](std::size_t e) {
     EdgeLocation loc;
@@ -235,6 +210,23 @@ TopologyReport analyze_topology(const Mesh& mesh, const TopologyOptions& options
       }
     }
   }
+  // The range of V(q) over the vertices q, for an open surface: V is affine in q, so its extremes
+  // over the mesh's convex hull are at vertices (gap.hpp). A closed surface's Σ F has no normal
+  // part beyond rounding, and V does not depend on q.
+  if (r.boundary_edges > 0) {
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (std::uint32_t w = 0; w < r.vertices; ++w) {
+      const double v = volume_about(total, mesh.vertices[weld.representative[w]] - ref);
+      if (!std::isfinite(v)) continue;
+      lo = std::min(lo, v);
+      hi = std::max(hi, v);
+    }
+    if (lo <= hi) {
+      r.volume_min = lo;
+      r.volume_max = hi;
+    }
+  }
+
   r.orientation_consistent = r.inconsistent_edges == 0;
   r.closed = face_count > 0 && r.edges > 0 && r.boundary_edges == 0 && r.nonmanifold_edges == 0 &&
              r.inconsistent_edges == 0;
@@ -250,6 +242,7 @@ TopologyReport analyze_topology(const Mesh& mesh, const TopologyOptions& options
 
   const auto dups = duplicated_faces(mesh, edges, welded_corner);
   r.duplicated_faces = dups.size();
+  for (const auto& d : dups) r.duplicated_area_faces += zero_face[d.first] ? 0 : 1;
   for (std::size_t i = 0; i < dups.size() && i < cap; ++i) {
     FaceLocation loc;
     loc.face = dups[i].first;
@@ -267,7 +260,7 @@ TopologyReport analyze_topology(const Mesh& mesh, const TopologyOptions& options
   for (const BoundaryLoop& loop : r.boundary_loops) r.loops_area += loop.area;
 
   r.volume_valid = face_count > 0 && r.boundary_edges == 0 && r.orientation_consistent &&
-                   r.duplicated_faces == 0;
+                   r.duplicated_area_faces == 0;
   write_notes(r);
   return r;
 }

@@ -117,6 +117,21 @@ TEST(TopologyCube, FarFromOriginKeepsDigits) {
   EXPECT_DOUBLE_EQ(r.volume_min, 2.0 / 3.0);
 }
 
+TEST(TopologyCube, HolesTouchingAtAVertexAreTwoLoops) {
+  // Faces 1 (0, 3, 1) of the bottom and 11 (1, 7, 5) of x = 1 share vertex 1 and no edge: their
+  // holes touch at a vertex, and each is a loop of three edges (not one figure-eight of six).
+  const TopologyReport r = analyze_topology(test::without_faces(unit_cube(), {1, 11}));
+  EXPECT_EQ(r.boundary_edges, 6u);
+  ASSERT_EQ(r.boundary_loops.size(), 2u);
+  for (const BoundaryLoop& loop : r.boundary_loops) {
+    EXPECT_TRUE(loop.closed);
+    EXPECT_EQ(loop.half_edges.size(), 3u);
+    EXPECT_DOUBLE_EQ(loop.area, 0.5);
+  }
+  EXPECT_DOUBLE_EQ(r.loops_area, 1.0);
+  EXPECT_DOUBLE_EQ(r.gap_area, 0.5 * std::sqrt(2.0));  // −½ e3 and −½ e1: not coplanar
+}
+
 TEST(TopologyCube, EmptyMesh) {
   const TopologyReport r = analyze_topology(Mesh{});
   EXPECT_EQ(r.faces, 0u);

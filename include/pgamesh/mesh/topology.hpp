@@ -66,7 +66,7 @@ struct TopologyReport {
   bool closed = false;  // every edge used by exactly two faces in opposite directions
   bool orientation_consistent = true;  // no inconsistent edge
 
-  // Measures (doubles, accumulated about `reference_point`, the bounding-box centre: ERRATA §6).
+  // Measures (doubles, accumulated about `reference_point`, mesh/reference_point.hpp: ERRATA §6).
   Vec3d reference_point{};
   double area = 0;
   double volume = 0;                  // signed volume about reference_point (the volume if closed)
@@ -82,6 +82,8 @@ struct TopologyReport {
   std::size_t collapsed_faces = 0;   // of those, faces with < 3 distinct welded vertices
   std::size_t small_area_faces = 0;  // non-zero but ≤ area_threshold × (longest side)²
   std::size_t duplicated_faces = 0;  // same vertex set as an earlier face, either orientation
+  std::size_t duplicated_area_faces = 0;  // of those, faces with non-zero area (they change volume)
+  double area_threshold = 0;              // the threshold the small faces were judged by
   std::vector<FaceLocation> zero_area_list, small_area_list, duplicated_list;
 
   // Edges.
@@ -94,7 +96,8 @@ struct TopologyReport {
   std::vector<ComponentSummary> component_list;
 
   // Whether volume, centre of mass and inertia are meaningful: no boundary, consistent
-  // orientation, no duplicated faces, at least one face. Notes say why not, in plain words.
+  // orientation, no duplicated faces of non-zero area, at least one face. Notes say why not, in
+  // plain words.
   bool volume_valid = false;
   std::vector<std::string> notes;
 
