@@ -1,0 +1,169 @@
+// `pgamesh check`: the JSON of DESIGN.md §5 on golden meshes, the exit codes, and the repaired mesh
+// written by --fix-orientation --output.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "pgamesh/mesh/read_mesh.hpp"
+#include "pgamesh/mesh/topology.hpp"
+#include "support/golden.hpp"
+
+namespace pgamesh {
+namespace {
+
+using test::json;
+
+struct CliRun {
+  int status = -1;
+  std::string out, err;
+};
+
+// Temporary files carry the process id: ctest runs the cases of this file in parallel processes.
+std::filesystem::path temp_path(const std::string& name) {
+  return std::filesystem::temp_directory_path() / (std::to_string(::getpid()) + "_" + name);
+}
+
+CliRun run_cli(const std::string& args) {
+  const std::string out = temp_path("pgamesh_check_cli.out").string();
+  const std::string err = temp_path("pgamesh_check_cli.err").string();
+  const std::string cmd =
+      std::string("'") + PGAMESH_CLI_PATH + "' check " + args + " >" + out + " 2>" + err;
+  CliRun r;
+  const int raw = std::system(cmd.c_str());
+  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  auto slurp = [](const std::string& p) {
+    std::ifstream in(p);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  r.out = slurp(out);
+  r.err = slurp(err);
+  return r;
+}
+
+std::string temp_file(const std::string& name, const std::string& content) {
+  const auto p = temp_path(name);
+  std::ofstream(p) << content;
+  return p.string();
+}
+
+// The unit cube without its top (z = 1) square, as OBJ.
+const char* open_cube_obj =
+    "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nv 0 0 1\nv 1 0 1\nv 0 1 1\nv 1 1 1\n"
+    "f 1 3 4\nf 1 4 2\nf 1 2 6\nf 1 6 5\nf 3 7 8\nf 3 8 4\nf 1 5 7\nf 1 7 3\nf 2 4 8\nf 2 8 6\n";
+
+TEST(CheckCli, JsonOfAClosedGoldenMesh) {
+  const CliRun r = run_cli(std::string("'") + PGAMESH_GOLDEN_DIR + "/meshes/torus.obj' --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const json j = json::parse(r.out);
+  const json golden = test::load_golden("mesh_props.json");
+  json expected;
+  for (const auto& c : golden["cases"])
+    if (c["id"] == "torus") expected = c["expected"];
+  ASSERT_FALSE(expected.is_null());
+  EXPECT_EQ(j["triangles"], expected["triangles"]);
+  EXPECT_EQ(j["vertices"], expected["vertices"]);
+  EXPECT_EQ(j["closed"], true);
+  EXPECT_EQ(j["boundary_edges"], 0);
+  EXPECT_EQ(j["nonmanifold_edges"], 0);
+  EXPECT_EQ(j["orientation_consistent"], true);
+  EXPECT_EQ(j["volume_valid"], true);
+  EXPECT_TRUE(test::near_scalar(j["area"].get<double>(), expected["area"].get<double>(), {}));
+  EXPECT_TRUE(test::near_scalar(j["volume"].get<double>(), expected["volume"].get<double>(), {}));
+  EXPECT_TRUE(test::near_scalar(j["gap_area"].get<double>(), expected["gap_area"].get<double>(),
+                                {1e-12, 1e-12}));
+  EXPECT_EQ(j["components"], 1);
+  EXPECT_EQ(j["boundary_loops"].size(), 0u);
+  EXPECT_EQ(j["notes"].size(), 0u);
+}
+
+TEST(CheckCli, JsonOfAnOpenMeshListsItsLoop) {
+  const std::string path = temp_file("pgamesh_open_cube.obj", open_cube_obj);
+  const CliRun r = run_cli("'" + path + "' --json");
+  ASSERT_EQ(r.status, 0) << r.err;  // an open mesh is a result, not an error
+  const json j = json::parse(r.out);
+  EXPECT_EQ(j["closed"], false);
+  EXPECT_EQ(j["volume_valid"], false);
+  EXPECT_EQ(j["boundary_edges"], 4);
+  EXPECT_EQ(j["gap_area"], 1.0);
+  EXPECT_EQ(j["boundary_loop_count"], 1);
+  const json& loop = j["boundary_loops"][0];
+  EXPECT_EQ(loop["edges"], 4);
+  EXPECT_EQ(loop["area"], 1.0);
+  EXPECT_EQ(loop["perimeter"], 4.0);
+  EXPECT_EQ(loop["vector_area"], json::array({0.0, 0.0, -1.0}));
+  EXPECT_EQ(loop["points"].size(), 4u);
+  for (const auto& p : loop["points"]) EXPECT_EQ(p[2], 1.0);  // the rim of the missing top
+  EXPECT_EQ(j["volume_range"], json::array({2.0 / 3.0, 1.0}));
+  ASSERT_GE(j["notes"].size(), 1u);
+  EXPECT_NE(j["notes"][0].get<std::string>().find("not meaningful"), std::string::npos);
+  // The readable report says the same in words.
+  const CliRun text = run_cli("'" + path + "'");
+  EXPECT_EQ(text.status, 0);
+  EXPECT_NE(text.out.find("NOT MEANINGFUL"), std::string::npos);
+  EXPECT_NE(text.out.find("boundary loops      1"), std::string::npos);
+}
+
+TEST(CheckCli, FixOrientationWritesTheRepairedMesh) {
+  // The closed cube with faces 2 and 5 reversed.
+  const std::string in =
+      temp_file("pgamesh_flipped_cube.obj",
+                "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nv 0 0 1\nv 1 0 1\nv 0 1 1\nv 1 1 1\n"
+                "f 1 3 4\nf 1 4 2\nf 5 8 6\nf 5 8 7\nf 1 2 6\nf 1 5 6\nf 3 7 8\nf 3 8 4\nf 1 5 7\n"
+                "f 1 7 3\nf 2 4 8\nf 2 8 6\n");
+  const std::string out = temp_path("pgamesh_fixed_cube.obj").string();
+  std::filesystem::remove(out);
+  const CliRun r = run_cli("'" + in + "' --fix-orientation --output '" + out + "' --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const json j = json::parse(r.out);
+  EXPECT_EQ(j["orientation_fix"]["flipped_faces"], 2);
+  EXPECT_EQ(j["orientation_fix"]["components"][0]["flipped_faces"], json::array({2, 5}));
+  EXPECT_EQ(j["closed"], true);  // the report describes the repaired mesh
+  EXPECT_EQ(j["volume"], 1.0);
+  const TopologyReport fixed = analyze_topology(read_mesh(out));
+  EXPECT_TRUE(fixed.closed);
+  EXPECT_EQ(fixed.volume, 1.0);
+}
+
+TEST(CheckCli, UnreadableInputFailsWithTheReadersError) {
+  const std::string bad = temp_file("pgamesh_bad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n");
+  const CliRun r = run_cli("'" + bad + "' --json");
+  EXPECT_NE(r.status, 0);
+  EXPECT_TRUE(r.out.empty());
+  EXPECT_NE(r.err.find(bad + ":4"), std::string::npos) << r.err;
+  const CliRun missing = run_cli("/nonexistent/mesh.stl");
+  EXPECT_NE(missing.status, 0);
+  EXPECT_NE(missing.err.find("/nonexistent/mesh.stl"), std::string::npos) << missing.err;
+}
+
+TEST(CheckCli, BadOptionsExitTwo) {
+  const std::string path = temp_file("pgamesh_open_cube.obj", open_cube_obj);
+  EXPECT_EQ(run_cli("'" + path + "' --weld-tolerance -1").status, 2);
+  EXPECT_EQ(run_cli("'" + path + "' --weld-tolerance abc").status, 2);
+  EXPECT_EQ(run_cli("'" + path + "' --output x.obj").status, 2);  // needs --fix-orientation
+  EXPECT_EQ(run_cli("'" + path + "' --bogus").status, 2);
+  EXPECT_EQ(run_cli("").status, 2);
+}
+
+TEST(CheckCli, WeldToleranceIsReported) {
+  // Two triangles whose shared edge differs by 1e-9 in one coordinate.
+  const std::string path = temp_file(
+      "pgamesh_seam.obj",
+      "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1.000000001 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 4 6 5\n");
+  const json exact = json::parse(run_cli("'" + path + "' --json").out);
+  EXPECT_EQ(exact["boundary_edges"], 6);
+  EXPECT_EQ(exact["components"], 2);
+  const json welded = json::parse(run_cli("'" + path + "' --json --weld-tolerance 1e-6").out);
+  EXPECT_EQ(welded["boundary_edges"], 4);
+  EXPECT_EQ(welded["components"], 1);
+  EXPECT_EQ(welded["weld"]["merged_vertices"], 2);
+  EXPECT_NEAR(welded["weld"]["max_moved"].get<double>(), 1e-9, 1e-15);
+}
+
+}  // namespace
+}  // namespace pgamesh
