@@ -7,7 +7,8 @@
 
 namespace pgamesh::tank {
 
-std::vector<FuelState> fuel_sweep(const Tank& tank, Vec3d up_in, std::span<const double> levels) {
+std::vector<FuelState> fuel_sweep(const Tank& tank, Vec3d up_in, std::span<const double> levels,
+                                  const std::function<void(std::size_t, std::size_t)>& progress) {
   const Vec3d up = unit_up(up_in);
   const auto n = static_cast<std::uint32_t>(tank.triangles.size());
   // Heights of the vertices: p ∨ v = height − level exactly as fuel_naive computes it.
@@ -35,7 +36,10 @@ std::vector<FuelState> fuel_sweep(const Tank& tank, Vec3d up_in, std::span<const
   BoundarySums whole;  // triangles wholly in the fuel (highest vertex ≤ level)
   std::vector<std::uint32_t> crossing;
   std::size_t next_min = 0, next_max = 0;
+  std::size_t done = 0;
   for (std::size_t li : order) {
+    if (progress && done % 1024 == 0) progress(done, levels.size());
+    ++done;
     if (!std::isfinite(levels[li])) throw std::invalid_argument("the level must be finite");
     const FuelPlane plane{up, levels[li]};  // up is already unit: keep its exact value
     const double level = plane.level;
@@ -75,6 +79,7 @@ std::vector<FuelState> fuel_sweep(const Tank& tank, Vec3d up_in, std::span<const
     }
     out[li] = fuel_state(tank, plane, ctx, sums, Side::fuel);
   }
+  if (progress) progress(levels.size(), levels.size());
   return out;
 }
 

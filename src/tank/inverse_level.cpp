@@ -18,13 +18,17 @@ std::string number(double x) {
 
 LevelSolution level_for_volume(const FuelIndex& index, Vec3d up_in, double volume) {
   const Vec3d up = unit_up(up_in);
-  const double total = index.tank().volume;
+  return level_for_volume([&](const FuelPlane& p) { return index.query(p); }, up, index.range(up),
+                          index.tank().volume, volume);
+}
+
+LevelSolution level_for_volume(const std::function<FuelState(const FuelPlane&)>& query, Vec3d up,
+                               LevelRange range, double total, double volume) {
   if (!std::isfinite(volume)) throw std::domain_error("the volume must be finite");
   if (volume < 0) throw std::domain_error("the volume " + number(volume) + " is negative");
   if (volume > total * (1 + 1e-12))
     throw std::domain_error("the volume " + number(volume) + " exceeds the tank's volume " +
                             number(total));
-  const LevelRange range = index.range(up);
   LevelSolution s;
   if (volume == 0) return {range.lowest, 0, 0};
   if (volume >= total) return {range.highest, total, 0};
@@ -33,7 +37,7 @@ LevelSolution level_for_volume(const FuelIndex& index, Vec3d up_in, double volum
   const double volume_tol = 1e-14 * total;
   double level = lo + (hi - lo) * (volume / total);
   for (;;) {
-    const FuelState st = index.query(FuelPlane{up, level});
+    const FuelState st = query(FuelPlane{up, level});
     ++s.iterations;
     s.level = level;
     s.volume = st.volume;
@@ -46,7 +50,7 @@ LevelSolution level_for_volume(const FuelIndex& index, Vec3d up_in, double volum
     if (!(st.surface_area > 0) || !(next > lo && next < hi)) next = (lo + hi) / 2;
     if (std::abs(next - level) <= height_tol) {
       s.level = next;
-      s.volume = index.query(FuelPlane{up, next}).volume;
+      s.volume = query(FuelPlane{up, next}).volume;
       ++s.iterations;
       break;
     }

@@ -4,6 +4,7 @@
 // [lowest, highest] always converges.
 #pragma once
 
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -23,6 +24,11 @@ struct LevelSolution {
 /// not finite, or exceeds the tank's volume (beyond 1e-12 relative); volume 0 gives the lowest
 /// point, the full volume the highest.
 LevelSolution level_for_volume(const FuelIndex& index, Vec3d up, double volume);
+
+/// The same iteration over any fuel query (e.g. fuel_naive, for comparisons): `range` the tank's
+/// extent along the unit vector `up`, `tank_volume` its volume.
+LevelSolution level_for_volume(const std::function<FuelState(const FuelPlane&)>& query, Vec3d up,
+                               LevelRange range, double tank_volume, double volume);
 
 /// The same for a fraction of the tank's volume in [0, 1].
 LevelSolution level_for_fraction(const FuelIndex& index, Vec3d up, double fraction);
