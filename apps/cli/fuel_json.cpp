@@ -1,0 +1,111 @@
+#include "fuel_json.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+namespace pgamesh::cli {
+
+namespace {
+
+void write_vec(JsonWriter& w, std::string_view key, Vec3d v) {
+  w.begin_array(key).number(v.x).number(v.y).number(v.z).end_array();
+}
+
+std::string num(double v) {
+  if (!std::isfinite(v)) return "";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  return buf;
+}
+
+}  // namespace
+
+void write_fuel_state(JsonWriter& w, const tank::FuelState& st, const tank::LevelRange& range) {
+  w.number("level", st.plane.level);
+  w.number("volume", st.volume);
+  w.number("fraction", st.fraction);
+  if (st.has_center) {
+    write_vec(w, "center_of_mass", st.center_of_mass);
+    w.begin_array("inertia_com");
+    for (const auto& row : st.inertia_com)
+      w.begin_array().number(row[0]).number(row[1]).number(row[2]).end_array();
+    w.end_array();
+  } else {
+    w.null("center_of_mass");
+    w.null("inertia_com");
+  }
+  w.number("wetted_area", st.wetted_area);
+  w.number("surface_area", st.surface_area);
+  if (st.surface.area > 0) {
+    write_vec(w, "surface_centroid", st.surface.centroid);
+  } else {
+    w.null("surface_centroid");
+  }
+  w.begin_array("surface_axes");
+  write_vec(w, {}, st.surface.axis1);
+  write_vec(w, {}, st.surface.axis2);
+  w.end_array();
+  const auto& m = st.surface.second;
+  w.begin_array("surface_second_moment")
+      .begin_array()
+      .number(m[0])
+      .number(m[2])
+      .end_array()
+      .begin_array()
+      .number(m[2])
+      .number(m[1])
+      .end_array()
+      .end_array();
+  w.number("surface_moment_transverse", m[1]);
+  w.number("surface_moment_longitudinal", m[0]);
+  w.number("ullage_volume", st.ullage_volume);
+  w.number("ullage_length", range.highest - st.plane.level);
+}
+
+void write_fuel_conventions(JsonWriter& w) {
+  w.begin_object("conventions");
+  w.string("plane", "up . x = level, up a unit vector in the tank frame; fuel is up . x <= level");
+  w.string("tank_frame", "x forward, y left, z up (right-handed)");
+  w.string("attitude",
+           "pitch about the lateral axis, positive nose up, then roll about the forward axis, "
+           "positive right side down; degrees; up = (sin p, sin r cos p, cos r cos p) for a level "
+           "up of +z");
+  w.string("density", "1 (mass = volume)");
+  w.string("inertia",
+           "tensor about the centre of mass, off-diagonals are minus the products of "
+           "inertia (I_xy = -integral of x y dV)");
+  w.string("surface_axes",
+           "axis1 = the tank x axis projected onto the free surface, axis2 = up x axis1");
+  w.string("surface_second_moment",
+           "[[int s1^2, int s1 s2], [int s1 s2, int s2^2]] dA about the surface centroid; "
+           "transverse = int s2^2 (about axis1), longitudinal = int s1^2 (about axis2)");
+  w.string("units",
+           "lengths in the mesh file's unit L: areas L^2, volumes L^3, inertia L^5, "
+           "moments of area L^4");
+  w.end_object();
+}
+
+std::string fuel_csv_columns(bool attitude) {
+  std::string s = attitude ? "pitch_deg,roll_deg," : "";
+  return s +
+         "level,volume,fraction,com_x,com_y,com_z,wetted_area,surface_area,"
+         "surface_moment_transverse,surface_moment_longitudinal,surface_moment_product,"
+         "ullage_length,ullage_volume";
+}
+
+std::string fuel_csv_row(const tank::FuelState& st, const tank::LevelRange& range, bool attitude,
+                         double pitch_deg, double roll_deg) {
+  std::string s;
+  if (attitude) s += num(pitch_deg) + "," + num(roll_deg) + ",";
+  const double nan = std::nan("");
+  const Vec3d c = st.has_center ? st.center_of_mass : Vec3d{nan, nan, nan};
+  const auto& m = st.surface.second;
+  for (double v :
+       {st.plane.level, st.volume, st.fraction, c.x, c.y, c.z, st.wetted_area, st.surface_area,
+        m[1], m[0], m[2], range.highest - st.plane.level, st.ullage_volume})
+    s += num(v) + ",";
+  s.pop_back();
+  return s;
+}
+
+}  // namespace pgamesh::cli
