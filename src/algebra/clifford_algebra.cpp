@@ -1,5 +1,6 @@
 // Construction of clifford::Algebra: metric, change of basis to an orthogonal basis, blade names.
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <stdexcept>
 
@@ -343,13 +344,15 @@ std::vector<std::pair<std::string, double>> Algebra::named_coefficients(
 }
 
 namespace {
-// Outermorphism of the linear map given by `images` (generator i ↦ images[i]).
+// Outermorphism of the linear map given by `images` (generator i ↦ images[i]): each blade is the
+// outer product of its generators' images, expanded factor by factor. Partial expansions are
+// merged only when they grow (null pairs make equal blades that cancel or combine).
 Multivector outermorphism(const Multivector& a, const std::vector<SparseVector>& images) {
   std::vector<Term> out, cur, next;
   for (const Term& t : a.terms) {
     cur.assign(1, Term{0, t.coeff});
-    for (int i = 0; t.mask >> i; ++i) {
-      if (!(t.mask >> i & 1)) continue;
+    for (BladeMask rest = t.mask; rest != 0; rest &= rest - 1) {
+      const int i = std::countr_zero(rest);
       next.clear();
       for (const Term& c : cur)
         for (const auto& [k, v] : images[static_cast<std::size_t>(i)]) {
@@ -357,7 +360,19 @@ Multivector outermorphism(const Multivector& a, const std::vector<SparseVector>&
           if (c.mask & bit) continue;
           next.push_back({c.mask | bit, c.coeff * v * reorder_sign(c.mask, bit)});
         }
-      cur = from_terms(next).terms;
+      if (next.size() > 8) {
+        std::sort(next.begin(), next.end(),
+                  [](const Term& x, const Term& y) { return x.mask < y.mask; });
+        std::size_t w = 0;
+        for (std::size_t r = 0; r < next.size(); ++r) {
+          if (w > 0 && next[w - 1].mask == next[r].mask)
+            next[w - 1].coeff += next[r].coeff;
+          else
+            next[w++] = next[r];
+        }
+        next.resize(w);
+      }
+      std::swap(cur, next);
     }
     out.insert(out.end(), cur.begin(), cur.end());
   }

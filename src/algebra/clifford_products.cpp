@@ -16,38 +16,39 @@ namespace {
 class Accumulator {
  public:
   explicit Accumulator(int n) : dense_(n <= 16) {
-    if (dense_) {
-      const std::size_t size = std::size_t{1} << n;
-      if (buffer().size() < size) {
-        buffer().assign(size, 0.0);
-        seen().assign(size, 0);
-      }
-      touched().clear();
-    } else {
-      list_.clear();
+    if (!dense_) return;
+    const std::size_t size = std::size_t{1} << n;
+    Scratch& s = scratch();
+    if (s.buffer.size() < size) {
+      s.buffer.assign(size, 0.0);
+      s.seen.assign(size, 0);
     }
+    s.touched.clear();
+    buffer_ = s.buffer.data();
+    seen_ = s.seen.data();
+    touched_ = &s.touched;
   }
   void add(BladeMask m, double c) {
     if (!dense_) {
       list_.push_back({m, c});
       return;
     }
-    if (!seen()[m]) {
-      seen()[m] = 1;
-      touched().push_back(m);
+    if (!seen_[m]) {
+      seen_[m] = 1;
+      touched_->push_back(m);
     }
-    buffer()[m] += c;
+    buffer_[m] += c;
   }
   Multivector take() {
     if (!dense_) return from_terms(std::move(list_));
-    auto& t = touched();
+    auto& t = *touched_;
     std::sort(t.begin(), t.end());
     Multivector out;
     out.terms.reserve(t.size());
     for (BladeMask m : t) {
-      if (buffer()[m] != 0) out.terms.push_back({m, buffer()[m]});
-      buffer()[m] = 0;
-      seen()[m] = 0;
+      if (buffer_[m] != 0) out.terms.push_back({m, buffer_[m]});
+      buffer_[m] = 0;
+      seen_[m] = 0;
     }
     t.clear();
     return out;
@@ -55,19 +56,19 @@ class Accumulator {
 
  private:
   // Per-thread scratch, so products allocate only their result.
-  static std::vector<double>& buffer() {
-    thread_local std::vector<double> b;
-    return b;
-  }
-  static std::vector<unsigned char>& seen() {
-    thread_local std::vector<unsigned char> s;
+  struct Scratch {
+    std::vector<double> buffer;
+    std::vector<unsigned char> seen;
+    std::vector<BladeMask> touched;
+  };
+  static Scratch& scratch() {
+    thread_local Scratch s;
     return s;
   }
-  static std::vector<BladeMask>& touched() {
-    thread_local std::vector<BladeMask> t;
-    return t;
-  }
   bool dense_;
+  double* buffer_ = nullptr;
+  unsigned char* seen_ = nullptr;
+  std::vector<BladeMask>* touched_ = nullptr;
   std::vector<Term> list_;
 };
 
