@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numeric>
 #include <stdexcept>
+#include <utility>
 
 namespace pgamesh::tank {
 
@@ -20,11 +21,16 @@ std::vector<FuelState> fuel_sweep(const Tank& tank, Vec3d up_in, std::span<const
     tmin[t] = std::min({height[tri[0]], height[tri[1]], height[tri[2]]});
     tmax[t] = std::max({height[tri[0]], height[tri[1]], height[tri[2]]});
   }
-  std::vector<std::uint32_t> by_min(n), by_max(n);
-  std::iota(by_min.begin(), by_min.end(), 0u);
-  std::iota(by_max.begin(), by_max.end(), 0u);
-  std::sort(by_min.begin(), by_min.end(), [&](auto a, auto b) { return tmin[a] < tmin[b]; });
-  std::sort(by_max.begin(), by_max.end(), [&](auto a, auto b) { return tmax[a] < tmax[b]; });
+  // Sort (key, triangle) pairs: direct comparisons on contiguous keys.
+  auto sorted_by = [&](const std::vector<double>& key) {
+    std::vector<std::pair<double, std::uint32_t>> pairs(n);
+    for (std::uint32_t t = 0; t < n; ++t) pairs[t] = {key[t], t};
+    std::sort(pairs.begin(), pairs.end());
+    std::vector<std::uint32_t> ids(n);
+    for (std::uint32_t i = 0; i < n; ++i) ids[i] = pairs[i].second;
+    return ids;
+  };
+  const std::vector<std::uint32_t> by_min = sorted_by(tmin), by_max = sorted_by(tmax);
   std::vector<std::size_t> order(levels.size());
   std::iota(order.begin(), order.end(), std::size_t{0});
   std::sort(order.begin(), order.end(), [&](auto a, auto b) { return levels[a] < levels[b]; });
