@@ -159,6 +159,7 @@ Header parse_header(TextCursor& c) {
     const char* at = c.p;
     const std::string_view w = c.word();
     if (w == "format") {
+      c.skip_blanks();
       const char* eat = c.p;
       const std::string_view enc = c.word();
       if (enc == "ascii")
@@ -168,7 +169,7 @@ Header parse_header(TextCursor& c) {
       else if (enc == "binary_big_endian")
         h.format = MeshFormat::ply_binary_be;
       else
-        c.fail(eat + 1, "unknown PLY encoding " + describe_at(eat + 1, c.end));
+        c.fail(eat, "unknown PLY encoding, found " + describe_at(eat, c.end));
       c.word();  // version, e.g. 1.0
       end_statement();
     } else if (w == "comment" || w == "obj_info") {

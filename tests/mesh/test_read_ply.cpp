@@ -207,10 +207,12 @@ TEST(ReadPly, AsciiErrorsHaveLineAndColumn) {
 }
 
 TEST(ReadPly, HeaderErrors) {
+  // Found by fuzzing: a format line cut at the end of the file once read one byte past it.
+  EXPECT_TEXT_ERROR(read_error("ply\nformat"), 2u, 7u, "unknown PLY encoding, found end of file");
   EXPECT_TEXT_ERROR(read_error("ply\nformat ascii 1.0\nelement vertex 0\n"), 4u, 1u,
                     "without 'end_header'");
   EXPECT_TEXT_ERROR(read_error("ply\nformat binary_middle_endian 1.0\nend_header\n"), 2u, 8u,
-                    "unknown PLY encoding 'binary_middle_endian'");
+                    "unknown PLY encoding, found 'binary_middle_endian'");
   EXPECT_TEXT_ERROR(read_error("ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n"
                                "property float y\nend_header\n0 0\n"),
                     3u, 1u, "vertex element without a 'z' property");

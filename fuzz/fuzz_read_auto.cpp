@@ -1,0 +1,6 @@
+// libFuzzer harness: content detection followed by whichever reader it picks (fuzz_common.hpp).
+#include "fuzz_common.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  return pgamesh::fuzz::read_bytes(data, size, pgamesh::MeshFormat::unknown);
+}
