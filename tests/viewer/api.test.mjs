@@ -9,8 +9,13 @@ import {
   tetrahedronObj,
 } from './support.mjs';
 
-let server;
-before(async () => { server = await startServer(); });
+let server, tankId, features;
+before(async () => {
+  server = await startServer();
+  features = (await (await fetch(new URL('/api/info', server.url))).json()).features;
+  const list = await (await fetch(new URL('/api/meshes', server.url))).json();
+  tankId = list.meshes.find((m) => m.name === 'tank.obj').id;
+});
 after(async () => { await server.stop(); });
 
 async function getJson(path, init) {
@@ -75,7 +80,7 @@ describe('methods', () => {
       ['PATCH', '/api/info', 'GET, HEAD'], ['OPTIONS', '/api/meshes', 'GET, HEAD'],
       ['POST', '/api/info', 'GET, HEAD'], ['POST', '/app.js', 'GET, HEAD'],
       ['GET', '/api/upload', 'POST'], ['PUT', '/api/upload', 'POST'],
-      ['DELETE', '/api/mesh/f0', 'GET, HEAD'],
+      ['DELETE', '/api/mesh/f0', 'GET, HEAD'], ['POST', '/api/mesh/f0/props', 'GET, HEAD'],
     ];
     for (const [method, path, allow] of cases) {
       const r = await fetch(new URL(path, server.url), { method });
@@ -130,8 +135,8 @@ describe('meshes', () => {
 
   test('the geometry holds every vertex and face of the file', async () => {
     const obj = readObj(tankPath);
-    const { body: summary } = await getJson('/api/mesh/f0');
-    const r = await fetch(new URL('/api/mesh/f0/geometry', server.url));
+    const { body: summary } = await getJson(`/api/mesh/${tankId}`);
+    const r = await fetch(new URL(`/api/mesh/${tankId}/geometry`, server.url));
     assert.equal(r.status, 200);
     const buffer = await r.arrayBuffer();
     const head = new DataView(buffer, 0, 8);
@@ -221,7 +226,7 @@ describe('mass properties', () => {
   });
 
   test('the tank against the classical divergence-theorem sums', async () => {
-    const { body } = await getJson('/api/mesh/f0/props?density=800');
+    const { body } = await getJson(`/api/mesh/${tankId}/props?density=800`);
     const ref = referenceProps(readObj(tankPath), 800);
     assert.ok(near(body.volume, ref.volume, ref.volume));
     assert.ok(near(body.area, ref.area, ref.area));
@@ -237,12 +242,126 @@ describe('mass properties', () => {
     assert.ok(body.principal_moments[1] <= body.principal_moments[2]);
   });
 
+  test('an open mesh: not closed, its boundary edges and gap', async () => {
+    const open = tetrahedronObj.replace('f 2 3 4\n', '');
+    const { id } = await (await upload(open, 'open.obj')).json();
+    const { body } = await getJson(`/api/mesh/${id}/props`);
+    assert.equal(body.closed, false);
+    assert.equal(body.boundary_edges, 3);
+    assert.ok(near(body.gap_area, Math.sqrt(3) / 2, 1, 1e-15));
+    const b = (await getJson(`/api/mesh/${id}/boundary`)).body;
+    assert.equal(b.boundary_edges, 3);
+    const ends = b.segments.map((s) => [s.slice(0, 3), s.slice(3)].map((p) => p.join(',')).sort()
+      .join(' ')).sort();
+    assert.deepEqual(ends, ['0,0,1 0,1,0', '0,0,1 1,0,0', '0,1,0 1,0,0']);
+    assert.equal(b.loops.length, 1);
+    assert.ok(near(b.loops[0].area, Math.sqrt(3) / 2, 1, 1e-15));
+    assert.ok(near(b.loops[0].perimeter, 3 * Math.SQRT2, 1, 1e-15));
+    const closed = (await getJson(`/api/mesh/${tankId}/props`)).body;
+    assert.equal(closed.closed, true);
+    assert.equal(closed.boundary_edges, 0);
+    assert.equal(closed.orientation_consistent, true);
+  });
+
   test('bad densities are 400, unknown meshes 404', async () => {
     for (const q of ['density=abc', 'density=-1', 'density=', 'density=1e999', 'density=nan']) {
-      const r = await fetch(new URL(`/api/mesh/f0/props?${q}`, server.url));
+      const r = await fetch(new URL(`/api/mesh/${tankId}/props?${q}`, server.url));
       assert.equal(r.status, 400, q);
     }
     assert.equal((await fetch(new URL('/api/mesh/u999999/props', server.url))).status, 404);
+  });
+});
+
+describe('fuel', () => {
+  const fuel = async (query) => getJson(`/api/mesh/${tankId}/fuel?${query}`);
+
+  test('level at the axis of the symmetric tank: half the volume, the same as pgamesh fuel',
+       async (t) => {
+    if (!features.fuel) return t.skip('this build serves no fuel');
+    const { status, body } = await fuel('level=0.6');
+    assert.equal(status, 200);
+    assert.deepEqual(body.up, [0, 0, 1]);
+    assert.equal(body.lowest, 0);
+    assert.equal(body.highest, 1.2);
+    const whole = referenceProps(readObj(tankPath)).volume;
+    assert.ok(near(body.tank_volume, whole, whole));
+    assert.ok(near(body.volume, whole / 2, whole, 1e-12));
+    assert.ok(near(body.fraction, 0.5, 1, 1e-12));
+    assert.ok(body.center_of_mass[2] < 0.6 && body.center_of_mass[2] > 0.2);
+    // The free surface at the axis is the tank's widest section: a 3.2 × 1.2 m stadium
+    // (faceted), between the inscribed polygon's area and the smooth one's.
+    assert.ok(body.surface_area < 2 * 1.2 + Math.PI * 0.36 && body.surface_area > 3.1);
+    const cli = await runCli(['fuel', tankPath, '--level', '0.6', '--json']);
+    if (cli.code === 0) {
+      const c = JSON.parse(cli.stdout);
+      // The server asks the hierarchy, the command the full pass: equal up to rounding.
+      for (const k of ['level', 'volume', 'fraction', 'wetted_area', 'surface_area'])
+        assert.ok(near(body[k], c[k], Math.abs(c[k]), 1e-12), k);
+      assert.ok(near(body.center_of_mass, c.center_of_mass, 1.6, 1e-12));
+    }
+  });
+
+  test('pitch and roll: the same figures as pgamesh fuel --pitch --roll', async (t) => {
+    if (!features.fuel) return t.skip('this build serves no fuel');
+    const { body } = await fuel('pitch=7.5&roll=-4&level=0.7');
+    const cli = await runCli(['fuel', tankPath, '--pitch', '7.5', '--roll', '-4', '--level', '0.7',
+                              '--json']);
+    assert.equal(cli.code, 0, cli.stderr);
+    const c = JSON.parse(cli.stdout);
+    assert.deepEqual(body.up, c.up);
+    const scale = body.tank_volume;
+    assert.ok(near(body.volume, c.volume, scale, 1e-12));
+    assert.ok(near(body.center_of_mass, c.center_of_mass, 1.6, 1e-12));
+    assert.ok(near(body.wetted_area, c.wetted_area, c.wetted_area, 1e-12));
+    assert.ok(near(body.surface_area, c.surface_area, c.surface_area, 1e-12));
+  });
+
+  test('fill to a volume gives the level that holds it', async (t) => {
+    if (!features.fuel) return t.skip('this build serves no fuel');
+    const { body } = await fuel('pitch=3&volume=1.25');
+    assert.ok(near(body.volume, 1.25, 1.25, 1e-12));
+    assert.equal(body.target_volume, 1.25);
+    const back = await fuel(`pitch=3&level=${body.level}`);
+    assert.ok(near(back.body.volume, 1.25, 1.25, 1e-12));
+  });
+
+  test('the gauge table rises from empty to full', async (t) => {
+    if (!features.fuel) return t.skip('this build serves no fuel');
+    const { status, body } = await getJson(`/api/mesh/${tankId}/fuel/table?n=16&roll=10`);
+    assert.equal(status, 200);
+    assert.equal(body.rows.length, 17);
+    assert.equal(body.rows[0].level, body.lowest);
+    assert.equal(body.rows[16].level, body.highest);
+    assert.ok(near(body.rows[0].volume, 0, body.tank_volume, 1e-15));
+    assert.ok(near(body.rows[16].volume, body.tank_volume, body.tank_volume, 1e-12));
+    for (let i = 1; i < 17; ++i) assert.ok(body.rows[i].volume >= body.rows[i - 1].volume);
+    const mid = await fuel(`roll=10&level=${body.rows[8].level}`);
+    assert.ok(near(mid.body.volume, body.rows[8].volume, body.tank_volume, 1e-12));
+  });
+
+  test('bad queries are 400, impossible ones 422, open meshes 422 with the reason', async (t) => {
+    if (!features.fuel) return t.skip('this build serves no fuel');
+    for (const q of ['level=abc', '', 'level=1&volume=1', 'pitch=400&level=0.5', 'roll=x&level=1'])
+      assert.equal((await fuel(q)).status, 400, q);
+    for (const q of ['n=0', 'n=5000', 'n=2.5'])
+      assert.equal((await getJson(`/api/mesh/${tankId}/fuel/table?${q}`)).status, 400, q);
+    const below = await fuel('level=-1');
+    assert.equal(below.status, 422);
+    assert.match(below.body.error, /below the tank/);
+    const over = await fuel('volume=1000');
+    assert.equal(over.status, 422);
+    assert.match(over.body.error, /volume 1000/);
+    const open = tetrahedronObj.replace('f 2 3 4\n', '');
+    const { id } = await (await upload(open, 'open.obj')).json();
+    const r = await getJson(`/api/mesh/${id}/fuel?level=0.5`);
+    assert.equal(r.status, 422);
+    assert.match(r.body.error, /^open\.obj: the mesh is open/);
+    const inside = tetrahedronObj.replace('f 1 3 2', 'f 1 2 3').replace('f 1 2 4', 'f 1 4 2')
+      .replace('f 1 4 3', 'f 1 3 4').replace('f 2 3 4', 'f 2 4 3');
+    const inv = await (await upload(inside, 'inside-out.obj')).json();
+    const r2 = await getJson(`/api/mesh/${inv.id}/fuel?level=0.5`);
+    assert.equal(r2.status, 422);
+    assert.match(r2.body.error, /inside out/);
   });
 });
 
@@ -267,7 +386,7 @@ describe('limits and load', () => {
     const appJs = await (await fetch(new URL('/app.js', server.url))).text();
     const kinds = [
       async () => {
-        const r = await fetch(new URL('/api/mesh/f0', server.url));
+        const r = await fetch(new URL(`/api/mesh/${tankId}`, server.url));
         return r.status === 200 && (await r.json()).faces === 2976;
       },
       async () => {
@@ -279,7 +398,7 @@ describe('limits and load', () => {
         return r.status === 201 && (await r.json()).faces === 4;
       },
       async () => {
-        const r = await fetch(new URL('/api/mesh/f0/geometry', server.url));
+        const r = await fetch(new URL(`/api/mesh/${tankId}/geometry`, server.url));
         return r.status === 200 && (await r.arrayBuffer()).byteLength === 8 + 12 * 1490 + 12 * 2976;
       },
     ];

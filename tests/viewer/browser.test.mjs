@@ -148,6 +148,97 @@ describe('viewer page', () => {
     }
   });
 
+  test('fuel: attitude and level on the page give the figures of pgamesh fuel', async (t) => {
+    const { page, problems } = await openPage(server.url);
+    try {
+      if (!(await page.evaluate(() => window.pgameshViewer.info.features.fuel)))
+        return t.skip('this build serves no fuel');
+      await page.waitForSelector('body[data-fuel="ready"]');
+      await page.fill('#pitch', '5');
+      await page.dispatchEvent('#pitch', 'change');
+      await page.waitForFunction(() => {
+        const up = document.getElementById('fuel-up').dataset.value;
+        return up && JSON.parse(up)[0] > 0.08 && document.body.dataset.fuel === 'ready';
+      });
+      await page.fill('#level', '0.8');
+      await page.dispatchEvent('#level', 'change');
+      await page.waitForFunction(() =>
+        document.getElementById('fuel-level').dataset.value === '0.8' &&
+        document.body.dataset.fuel === 'ready');
+      const cli = await runCli(['fuel', tankPath, '--pitch', '5', '--level', '0.8', '--json']);
+      assert.equal(cli.code, 0, cli.stderr);
+      const c = JSON.parse(cli.stdout);
+      const tankVolume = c.tank_volume;
+      assert.deepEqual(await figure(page, 'fuel-up'), c.up);
+      assert.ok(near(await figure(page, 'fuel-volume'), c.volume, tankVolume, 1e-12));
+      assert.ok(near(await figure(page, 'fuel-fraction'), c.fraction, 1, 1e-12));
+      const com = await figure(page, 'fuel-com');
+      assert.ok(near(com, c.center_of_mass, 1.6, 1e-12));
+      assert.ok(near(await figure(page, 'fuel-wetted-area'), c.wetted_area, c.wetted_area, 1e-12));
+      assert.ok(near(await figure(page, 'fuel-surface-area'), c.surface_area, c.surface_area,
+                     1e-12));
+
+      // Drawn: the fuel, its centre of mass, and the gauge curve with the level marked.
+      const drawn = await page.evaluate(() => {
+        const v = window.pgameshViewer.view;
+        const dot = document.querySelector('#gauge-plot circle.current');
+        return { fuel: !!v.groups.fuel,
+                 com: v.groups['fuel-com'].position.clone().add(v.origin).toArray(),
+                 curvePoints: document.querySelector('#gauge-plot path.curve')
+                   .getAttribute('d').split(/[ML]/).filter(Boolean).length,
+                 dotLevel: Number(dot.dataset.level), dotVolume: Number(dot.dataset.volume) };
+      });
+      assert.ok(drawn.fuel);
+      assert.ok(near(drawn.com, com, 1.6, 1e-6));
+      assert.equal(drawn.curvePoints, 65);
+      assert.equal(drawn.dotLevel, 0.8);
+      assert.ok(near(drawn.dotVolume, c.volume, tankVolume, 1e-12));
+      await shot(page, 'fuel-level');
+
+      // Fill to a volume: the inverse gauge's level, as `pgamesh fuel --volume`.
+      await page.fill('#fill-volume', '2');
+      await page.click('#fill-form button');
+      await page.waitForFunction(() =>
+        Math.abs(document.getElementById('fuel-volume').dataset.value - 2) < 1e-9 &&
+        document.body.dataset.fuel === 'ready');
+      const inv = JSON.parse((await runCli(['fuel', tankPath, '--pitch', '5', '--volume', '2',
+                                            '--json'])).stdout);
+      assert.ok(near(await figure(page, 'fuel-level'), inv.level, 1.2, 1e-9));
+      assert.ok(near(Number(await page.inputValue('#level')), inv.level, 1.2, 1e-9));
+      await shot(page, 'fuel-fill');
+      await page.locator('#fuel-panel').screenshot({ path: join(artifactsDir, 'fuel-panel.png') });
+      assert.deepEqual(problems, []);
+    } finally {
+      await page.close();
+    }
+  });
+
+  test('an open mesh: the fuel panel says why, mass properties are still shown', async () => {
+    const { page } = await openPage(server.url);
+    try {
+      await selectFile(page, 'open-tetra.obj', tetrahedronObj.replace('f 2 3 4\n', ''));
+      await page.waitForSelector('#mesh-name:text("open-tetra.obj")');
+      await settled(page);
+      if (await page.evaluate(() => window.pgameshViewer.info.features.fuel)) {
+        const status = await page.textContent('#fuel-status');
+        assert.match(status, /open-tetra\.obj: the mesh is open/);
+        assert.equal(await page.getAttribute('#fuel-status', 'class'), 'status problem');
+      }
+      assert.ok(near(await figure(page, 'props-gap-area'), Math.sqrt(3) / 2, 1, 1e-12));
+      assert.equal(await figure(page, 'props-closed'), false);
+      assert.equal(await figure(page, 'props-boundary-edges'), 3);
+      // The three edges of the missing face are highlighted.
+      await page.waitForFunction(() => !!window.pgameshViewer.view.groups.boundary);
+      const segments = await page.evaluate(() =>
+        window.pgameshViewer.view.groups.boundary.geometry.getAttribute('position').count / 2);
+      assert.equal(segments, 3);
+      assert.equal(await page.$$eval('#gauge-plot *', (e) => e.length), 0);
+      await shot(page, 'open-mesh-fuel');
+    } finally {
+      await page.close();
+    }
+  });
+
   test('a mesh opened with the file picker replaces the view and figures', async () => {
     const { page, problems } = await openPage(server.url);
     try {

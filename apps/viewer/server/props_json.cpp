@@ -19,7 +19,7 @@ void mat(cli::JsonWriter& w, std::string_view key, const Mat3& m) {
 
 }  // namespace
 
-std::string props_json(const MassProperties& p) {
+std::string props_json(const MassProperties& p, const TopologyReport* topology) {
   cli::JsonWriter w;
   w.begin_object();
   w.integer("triangles", p.triangles).integer("faces", p.faces).integer("vertices", p.vertices);
@@ -48,6 +48,43 @@ std::string props_json(const MassProperties& p) {
   w.begin_array("warnings");
   for (const std::string& s : p.warnings) w.string(s);
   w.end_array();
+  if (topology) {
+    w.boolean("closed", topology->closed);
+    w.integer("boundary_edges", topology->boundary_edges);
+    w.integer("nonmanifold_edges", topology->nonmanifold_edges);
+    w.boolean("orientation_consistent", topology->orientation_consistent);
+    w.boolean("volume_valid", topology->volume_valid);
+    w.begin_array("notes");
+    for (const std::string& s : topology->notes) w.string(s);
+    w.end_array();
+  }
+  w.end_object();
+  return w.str();
+}
+
+std::string boundary_json(const TopologyReport& t) {
+  cli::JsonWriter w;
+  w.begin_object();
+  w.integer("boundary_edges", t.boundary_edges);
+  w.begin_array("segments");
+  for (const EdgeLocation& e : t.boundary_edge_list)
+    w.begin_array()
+        .number(e.p0.x)
+        .number(e.p0.y)
+        .number(e.p0.z)
+        .number(e.p1.x)
+        .number(e.p1.y)
+        .number(e.p1.z)
+        .end_array();
+  w.end_array();
+  w.begin_array("loops");
+  for (const BoundaryLoop& l : t.boundary_loops) {
+    w.begin_object().number("area", l.area).number("perimeter", l.perimeter);
+    vec(w, "vector_area", l.vector_area);
+    w.end_object();
+  }
+  w.end_array();
+  w.number("gap_area", t.gap_area);
   w.end_object();
   return w.str();
 }

@@ -20,7 +20,9 @@
 #include "mesh_view.hpp"
 #include "pgamesh/input_error.hpp"
 #include "pgamesh/mesh/mass_properties.hpp"
+#include "pgamesh/mesh/topology.hpp"
 #include "props_json.hpp"
+#include "responses.hpp"
 
 namespace pgamesh::viewer {
 
@@ -29,35 +31,10 @@ namespace {
 using nlohmann::json;
 
 constexpr std::size_t kWorkerThreads = 32;
-
-void send_json(httplib::Response& res, int status, const json& body) {
-  res.status = status;
-  res.set_header("Cache-Control", "no-store");
-  // With a charset, httplib does not brotli-compress it (slow at its default quality, and
-  // pointless on loopback).
-  res.set_content(body.dump(), "application/json; charset=utf-8");
-}
-
-// An answer whose JSON was written elsewhere (the library's JSON builders).
-void send_raw_json(httplib::Response& res, std::string body) {
-  res.status = 200;
-  res.set_header("Cache-Control", "no-store");
-  res.set_content(std::move(body), "application/json; charset=utf-8");
-}
-
-// A whole query parameter as a finite double ("1e3", "-0.5"); false for anything else.
-bool parse_number(const std::string& text, double& out) {
-  const char* end = text.data() + text.size();
-  const auto [p, ec] = std::from_chars(text.data(), end, out);
-  return ec == std::errc() && p == end && !text.empty() && std::isfinite(out);
-}
-
-void send_error(httplib::Response& res, int status, const std::string& message) {
-  send_json(res, status, {{"error", message}});
-}
+constexpr std::size_t kMaxBoundarySegments = 100000;
 
 // What a path may be asked with: "GET" (HEAD included), "POST", or nothing (unknown path).
-const std::regex kMeshRoutes(R"(/api/mesh/[fu][0-9]{1,18}(/geometry|/props)?)");
+const std::regex kMeshRoutes(R"(/api/mesh/[fu][0-9]{1,18}(/geometry|/props|/boundary)?)");
 
 std::string allowed_method(const AssetTable& assets, const std::string& path) {
   if (assets.by_url.count(path) || path == "/api/info" || path == "/api/meshes" ||
@@ -97,22 +74,6 @@ std::string upload_name(const httplib::Request& req) {
   return name.empty() ? "upload" : name;
 }
 
-// Looks up the mesh of a route, answering 404/422 itself when there is none.
-std::shared_ptr<const StoredMesh> find_mesh(MeshStore& store, const std::string& id,
-                                            httplib::Response& res) {
-  try {
-    auto stored = store.get(id);
-    if (!stored)
-      send_error(
-          res, 404,
-          "no mesh with id '" + id + "' (uploads are kept " + "only for the most recent few)");
-    return stored;
-  } catch (const InputError& e) {
-    send_error(res, 422, e.what());
-    return nullptr;
-  }
-}
-
 void add_routes(httplib::Server& svr, const ServerOptions& options, const AssetTable& assets,
                 MeshStore& store) {
   svr.set_pre_routing_handler([&assets](const httplib::Request& req, httplib::Response& res) {
@@ -142,7 +103,7 @@ void add_routes(httplib::Server& svr, const ServerOptions& options, const AssetT
     send_json(res, 200,
               {{"version", PGAMESH_VERSION},
                {"max_upload", options.max_upload},
-               {"features", {{"props", true}, {"check", false}, {"fuel", false}}}});
+               {"features", {{"props", true}, {"check", true}, {"fuel", false}}}});
   });
 
   svr.Get("/api/meshes", [&store](const httplib::Request&, httplib::Response& res) {
@@ -166,21 +127,36 @@ void add_routes(httplib::Server& svr, const ServerOptions& options, const AssetT
             }
           });
 
-  svr.Get(R"(/api/mesh/([fu][0-9]{1,18})/props)",
+  svr.Get(R"(/api/mesh/([fu][0-9]{1,18})/props)", [&store](const httplib::Request& req,
+                                                           httplib::Response& res) {
+    MassOptions options;
+    if (req.has_param("density")) {
+      double density = 0;
+      if (!parse_number(req.get_param_value("density"), density) || density < 0)
+        return send_error(res, 400, "density must be a finite number >= 0");
+      options.density = density;
+    }
+    if (auto m = find_mesh(store, req.matches[1], res)) {
+      try {
+        const TopologyReport topology = analyze_topology(m->mesh);
+        send_raw_json(res, props_json(mass_properties(m->mesh, options, &m->source), &topology));
+      } catch (const std::invalid_argument& e) {
+        send_error(res, 422, m->name + ": " + e.what());
+      } catch (const std::out_of_range& e) {
+        send_error(res, 422, m->name + ": " + e.what());
+      }
+    }
+  });
+
+  // The boundary edges to draw (at most kMaxBoundarySegments of them) and the holes' loops.
+  svr.Get(R"(/api/mesh/([fu][0-9]{1,18})/boundary)",
           [&store](const httplib::Request& req, httplib::Response& res) {
-            MassOptions options;
-            if (req.has_param("density")) {
-              double density = 0;
-              if (!parse_number(req.get_param_value("density"), density) || density < 0)
-                return send_error(res, 400, "density must be a finite number >= 0");
-              options.density = density;
-            }
             if (auto m = find_mesh(store, req.matches[1], res)) {
+              TopologyOptions options;
+              options.list_cap = kMaxBoundarySegments;
               try {
-                send_raw_json(res, props_json(mass_properties(m->mesh, options, &m->source)));
-              } catch (const std::invalid_argument& e) {
-                send_error(res, 422, m->name + ": " + e.what());
-              } catch (const std::out_of_range& e) {
+                send_raw_json(res, boundary_json(analyze_topology(m->mesh, options)));
+              } catch (const std::exception& e) {
                 send_error(res, 422, m->name + ": " + e.what());
               }
             }

@@ -39,6 +39,7 @@ export class FuelPanel {
   // A new mesh: table for the current attitude, then the fuel at half height.
   async reset() {
     this.table = null;
+    document.getElementById('gauge-plot').replaceChildren();
     await this.attitudeChanged(0.5);
   }
 
