@@ -16,12 +16,13 @@
 #include <thread>
 
 #include "assets.hpp"
+#include "boundary_json.hpp"
 #include "mesh_store.hpp"
 #include "mesh_view.hpp"
 #include "pgamesh/input_error.hpp"
 #include "pgamesh/mesh/mass_properties.hpp"
 #include "pgamesh/mesh/topology.hpp"
-#include "props_json.hpp"
+#include "props_report.hpp"
 #include "responses.hpp"
 
 namespace pgamesh::viewer {
@@ -129,17 +130,17 @@ void add_routes(httplib::Server& svr, const ServerOptions& options, const AssetT
 
   svr.Get(R"(/api/mesh/([fu][0-9]{1,18})/props)", [&store](const httplib::Request& req,
                                                            httplib::Response& res) {
-    MassOptions options;
+    cli::PropsOptions options;
     if (req.has_param("density")) {
       double density = 0;
       if (!parse_number(req.get_param_value("density"), density) || density < 0)
         return send_error(res, 400, "density must be a finite number >= 0");
-      options.density = density;
+      options.mass.density = density;
     }
     if (auto m = find_mesh(store, req.matches[1], res)) {
       try {
-        const TopologyReport topology = analyze_topology(m->mesh);
-        send_raw_json(res, props_json(mass_properties(m->mesh, options, &m->source), &topology));
+        // The same report and JSON as `pgamesh props --json` (apps/cli/props_report.hpp).
+        send_raw_json(res, cli::props_json(cli::props_of_mesh(m->mesh, m->source, options)));
       } catch (const std::invalid_argument& e) {
         send_error(res, 422, m->name + ": " + e.what());
       } catch (const std::out_of_range& e) {

@@ -28,7 +28,9 @@ export class PropsPanel {
     try {
       const p = await api.getProps(mesh.id, density);
       if (seq !== this.seq) return;
-      this.onStatus(null);
+      // Figures of an open or inconsistent surface are shown, with why they are not a solid's.
+      this.onStatus(p.meaningful === false
+        ? `Not the figures of a solid: ${p.meaningful_reasons.join('; ')}` : null);
       this.show(p);
       if (view) this.draw(p);
       if (p.boundary_edges > 0 && this.state.info.features.check) {
