@@ -15,11 +15,16 @@
 
 namespace pgamesh::viewer {
 
+struct FuelModel;  // fuel_model.hpp
+
 struct StoredMesh {
   std::string id;    // "f0", "f1", ... for files, "u1", "u2", ... for uploads
   std::string name;  // what the page shows: the file name or the uploaded file's name
   Mesh mesh;
   MeshSource source;
+  // Built on first use by fuel_model(), under cache_mutex.
+  mutable std::mutex cache_mutex;
+  mutable std::shared_ptr<const FuelModel> fuel;
 };
 
 struct FileEntry {

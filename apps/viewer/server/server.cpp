@@ -17,6 +17,7 @@
 
 #include "assets.hpp"
 #include "boundary_json.hpp"
+#include "fuel_routes.hpp"
 #include "mesh_store.hpp"
 #include "mesh_view.hpp"
 #include "pgamesh/input_error.hpp"
@@ -35,7 +36,8 @@ constexpr std::size_t kWorkerThreads = 32;
 constexpr std::size_t kMaxBoundarySegments = 100000;
 
 // What a path may be asked with: "GET" (HEAD included), "POST", or nothing (unknown path).
-const std::regex kMeshRoutes(R"(/api/mesh/[fu][0-9]{1,18}(/geometry|/props|/boundary)?)");
+const std::regex kMeshRoutes(
+    R"(/api/mesh/[fu][0-9]{1,18}(/geometry|/props|/boundary|/fuel|/fuel/table)?)");
 
 std::string allowed_method(const AssetTable& assets, const std::string& path) {
   if (assets.by_url.count(path) || path == "/api/info" || path == "/api/meshes" ||
@@ -104,7 +106,7 @@ void add_routes(httplib::Server& svr, const ServerOptions& options, const AssetT
     send_json(res, 200,
               {{"version", PGAMESH_VERSION},
                {"max_upload", options.max_upload},
-               {"features", {{"props", true}, {"check", true}, {"fuel", false}}}});
+               {"features", {{"props", true}, {"check", true}, {"fuel", true}}}});
   });
 
   svr.Get("/api/meshes", [&store](const httplib::Request&, httplib::Response& res) {
@@ -162,6 +164,8 @@ void add_routes(httplib::Server& svr, const ServerOptions& options, const AssetT
               }
             }
           });
+
+  add_fuel_routes(svr, store);
 
   svr.Post("/api/upload", [&store](const httplib::Request& req, httplib::Response& res) {
     const std::string name = upload_name(req);
