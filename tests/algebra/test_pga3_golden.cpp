@@ -145,6 +145,7 @@ TEST(Pga3Golden, JoinsAndMeets) {
     EXPECT_TRUE(near_scalar(ab & (cc & d), e["join_abcd"], t));  // line ∨ line
     EXPECT_TRUE(near_scalar(p & a, e["plane_join_a"], t));
     EXPECT_TRUE(near_scalar(a & p, e["a_join_plane"], t));
+    EXPECT_TRUE(near_scalar(side(p, a), e["plane_join_a"], t));  // eq. 4.10
 
     const Point<double> x = ab ^ p;
     EXPECT_TRUE(near_mv(to_multivector(x), e["meet_line_ab_plane"], t));

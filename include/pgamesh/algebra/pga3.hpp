@@ -10,9 +10,11 @@
 #pragma once
 
 #include "pgamesh/algebra/pga3/convert.hpp"
+#include "pgamesh/algebra/pga3/exp_log.hpp"
 #include "pgamesh/algebra/pga3/grades.hpp"
 #include "pgamesh/algebra/pga3/join.hpp"
 #include "pgamesh/algebra/pga3/linear.hpp"
+#include "pgamesh/algebra/pga3/metric.hpp"
 #include "pgamesh/algebra/pga3/motor.hpp"
 #include "pgamesh/algebra/pga3/multivector.hpp"
 #include "pgamesh/algebra/pga3/norm.hpp"
