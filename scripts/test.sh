@@ -24,10 +24,6 @@ echo "== AddressSanitizer + UndefinedBehaviorSanitizer"
 cmake --preset sanitize > /dev/null
 cmake --build --preset sanitize -j "$jobs"
 ctest --preset sanitize -j "$jobs"
-if build/sanitize/pgamesh serve --help > /dev/null 2>&1; then
-  echo "== viewer API tests against the sanitized server"
-  PGAMESH_CLI=build/sanitize/pgamesh timeout --kill-after=10 300 node --test tests/viewer/api.test.mjs
-fi
 
 if compgen -G "fuzz/fuzz_*.cpp" > /dev/null; then
   echo "== libFuzzer, ${PGAMESH_FUZZ_SECONDS:-30} s per reader"
