@@ -45,6 +45,7 @@ std::string describe_at(const char* at, const char* end) {
 
 bool same_word(std::string_view a, std::string_view b) {
   if (a.size() != b.size()) return false;
+  if (a == b) return true;  // the usual lower-case keyword
   for (std::size_t i = 0; i < a.size(); ++i) {
     char x = a[i], y = b[i];
     if (x >= 'A' && x <= 'Z') x = static_cast<char>(x - 'A' + 'a');
@@ -76,11 +77,60 @@ bool ends_token(const char* q, const char* end, char delimiter) {
 }
 }  // namespace
 
+// Clinger's fast path for the plain decimals mesh files are made of: with at most 19 digits, a
+// mantissa m <= 2^53 and a power of ten 10^e with |e| <= 22 are both exact doubles, so m * 10^e
+// (or m / 10^-e) is one correctly rounded operation — bit-identical to std::from_chars. Anything
+// else (longer mantissas, larger exponents, nan, inf) returns nullptr and goes to from_chars.
+const char* simple_decimal(const char* p, const char* end, double& out) {
+  static constexpr double pow10[23] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
+                                       1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
+                                       1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+  const char* q = p;
+  const bool negative = q != end && *q == '-';
+  if (negative) ++q;
+  std::uint64_t m = 0;
+  int digits = 0, fraction = 0;
+  auto digit = [&](const char* c) { return c != end && static_cast<unsigned>(*c - '0') < 10; };
+  for (; digit(q); ++q, ++digits) m = m * 10 + static_cast<unsigned>(*q - '0');
+  if (q != end && *q == '.')
+    for (++q; digit(q); ++q, ++digits, ++fraction) m = m * 10 + static_cast<unsigned>(*q - '0');
+  if (digits == 0 || digits > 19) return nullptr;
+  int e = 0;
+  if (q != end && (*q == 'e' || *q == 'E')) {
+    const char* r = q + 1;
+    const bool eneg = r != end && *r == '-';
+    if (r != end && (*r == '-' || *r == '+')) ++r;
+    int edigits = 0;
+    for (; digit(r); ++r)
+      if (++edigits > 4)
+        return nullptr;
+      else
+        e = e * 10 + (*r - '0');
+    if (edigits) {  // "1e" is "1" followed by a stray 'e', as for from_chars
+      q = r;
+      if (eneg) e = -e;
+    } else {
+      e = 0;
+    }
+  }
+  e -= fraction;
+  if (m > (std::uint64_t{1} << 53) || e < -22 || e > 22) return nullptr;
+  const double v = e < 0 ? static_cast<double>(m) / pow10[-e] : static_cast<double>(m) * pow10[e];
+  out = negative ? -v : v;
+  return q;
+}
+
 double TextCursor::number(const char* what, char delimiter) {
   skip_blanks();
   const char* s = p;
   if (s != end && *s == '+' && s + 1 != end && *(s + 1) != '-') ++s;  // from_chars has no '+'
   double v = 0;
+  if (const char* q = simple_decimal(s, end, v)) {
+    if (!ends_token(q, end, delimiter))
+      fail(p, std::string("malformed ") + what + " " + describe_at(p, end));
+    p = q;
+    return v;
+  }
   const auto r = std::from_chars(s, end, v);
   if (r.ec == std::errc::invalid_argument)
     fail(p, std::string("expected ") + what + ", found " + describe_at(p, end));

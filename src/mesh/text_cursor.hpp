@@ -31,6 +31,11 @@ inline bool is_space(char c) {
   return is_blank(c) || c == '\n';
 }
 
+// The value of a plain decimal ([-]digits[.digits][e[+-]digits]) starting at p, bit-identical to
+// std::from_chars; returns the end of the number, or nullptr when it is not such a decimal or
+// needs more than the fast path (then from_chars decides).
+const char* simple_decimal(const char* p, const char* end, double& out);
+
 // ASCII case-insensitive equality, for keywords such as "facet" / "FACET".
 bool same_word(std::string_view a, std::string_view b);
 
