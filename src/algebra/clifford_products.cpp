@@ -205,6 +205,8 @@ Multivector exp(const Algebra& alg, const Multivector& a) {
   const double es = std::exp(s0);
   if (b.is_zero()) return scalar(es);
   const Multivector b2 = geometric(alg, b, b);
+  for (const Term& t : b2.terms)
+    if (!std::isfinite(t.coeff)) throw std::domain_error("exp: the argument is not finite");
   const double scale = std::max(max_abs_coeff(b2), 1e-300);
   if (only_grades(b2, 1u, scale)) {
     const SimpleExp e = simple_exp(scalar_part(b2));
@@ -221,6 +223,7 @@ Multivector exp(const Algebra& alg, const Multivector& a) {
   int k = 0;
   double size = 0;
   for (const Term& t : b.terms) size += std::abs(t.coeff);
+  if (!std::isfinite(size)) throw std::domain_error("exp: the argument is not finite");
   while (size > 0.5) {
     size /= 2;
     ++k;

@@ -242,6 +242,10 @@ TEST(Calc, HostileInputFailsCleanly) {
   r = calc("-", sum);
   EXPECT_EQ(r.status, 0);
   EXPECT_EQ(r.out, "20000 e1\n");
+  // exp of a non-simple bivector with infinite size: an error, not an endless scaling loop
+  r = calc("--algebra 4,0,0 'exp(1E308*e12 + 1E308*e34 + 1E308*e13)'");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("not finite"), std::string::npos) << r.err;
   // binary junk
   r = calc("-", std::string("\x01\xff\x00garbage", 10));
   EXPECT_EQ(r.status, 1);

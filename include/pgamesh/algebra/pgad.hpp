@@ -310,6 +310,8 @@ bool only_grades(const Multivector<D>& a, unsigned allowed) {
 template <int D>
 Multivector<D> exp(const Multivector<D>& b) {
   const Multivector<D> b2 = geometric(b, b);
+  for (double x : b2.c)
+    if (!std::isfinite(x)) throw std::domain_error("pgad::exp: the argument is not finite");
   if (detail::only_grades(b2, 1u)) {
     const clifford::SimpleExp e = clifford::simple_exp(b2.c[0]);
     return scalar<D>(e.c0) + e.cB * b;
@@ -320,6 +322,7 @@ Multivector<D> exp(const Multivector<D>& b) {
   }
   double size = 0;
   for (double x : b.c) size += std::abs(x);
+  if (!std::isfinite(size)) throw std::domain_error("pgad::exp: the argument is not finite");
   int k = 0;
   for (; size > 0.5; size /= 2) ++k;
   const Multivector<D> small = std::ldexp(1.0, -k) * b;
