@@ -9,10 +9,6 @@ namespace pgamesh::cli {
 
 namespace {
 
-void vec3(JsonWriter& j, std::string_view key, Vec3d v) {
-  j.begin_array(key).number(v.x).number(v.y).number(v.z).end_array();
-}
-
 void edge_list(JsonWriter& j, std::string_view key, const std::vector<EdgeLocation>& list,
                std::size_t cap) {
   j.begin_array(key);
@@ -22,8 +18,8 @@ void edge_list(JsonWriter& j, std::string_view key, const std::vector<EdgeLocati
     j.integer("face", e.face);
     j.begin_array("vertices").integer({}, e.vertex0).integer({}, e.vertex1).end_array();
     j.begin_array("points");
-    vec3(j, {}, e.p0);
-    vec3(j, {}, e.p1);
+    j.vec3(e.p0);
+    j.vec3(e.p1);
     j.end_array();
     j.integer("faces", e.face_count);
     j.end_object();
@@ -39,7 +35,7 @@ void face_list(JsonWriter& j, std::string_view key, const std::vector<FaceLocati
     j.begin_object();
     j.integer("face", f.face);
     if (f.same_as != no_edge) j.integer("same_as", f.same_as);
-    vec3(j, "centroid", f.centroid);
+    j.vec3("centroid", f.centroid);
     j.number("area", f.area);
     j.end_object();
   }
@@ -66,12 +62,7 @@ void write_check_fields(JsonWriter& j, const Mesh& mesh, const MeshSource& sourc
   j.integer("boundary_edges", r.boundary_edges);
   j.integer("nonmanifold_edges", r.nonmanifold_edges);
   j.boolean("orientation_consistent", r.orientation_consistent);
-  j.begin_object("carrier_sum")
-      .number("e0", r.carrier_sum.e0)
-      .number("e1", r.carrier_sum.e1)
-      .number("e2", r.carrier_sum.e2)
-      .number("e3", r.carrier_sum.e3)
-      .end_object();
+  j.plane("carrier_sum", r.carrier_sum);
   // Weld and edges.
   j.begin_object("weld")
       .integer("input_vertices", r.input_vertices)
@@ -82,9 +73,9 @@ void write_check_fields(JsonWriter& j, const Mesh& mesh, const MeshSource& sourc
       .end_object();
   j.integer("edges", r.edges);
   j.integer("inconsistent_edges", r.inconsistent_edges);
-  vec3(j, "reference_point", r.reference_point);
+  j.vec3("reference_point", r.reference_point);
   // The gap and what it leaves open.
-  vec3(j, "gap_vector", r.gap_vector);
+  j.vec3("gap_vector", r.gap_vector);
   j.begin_array("volume_range").number(r.volume_min).number(r.volume_max).end_array();
   j.number("volume_ambiguity", r.volume_ambiguity());
   j.integer("boundary_loop_count", r.boundary_loops.size());
@@ -95,12 +86,12 @@ void write_check_fields(JsonWriter& j, const Mesh& mesh, const MeshSource& sourc
     j.begin_object();
     j.integer("edges", loop.half_edges.size());
     j.boolean("closed", loop.closed);
-    vec3(j, "vector_area", loop.vector_area);
+    j.vec3("vector_area", loop.vector_area);
     j.number("area", loop.area);
     j.number("perimeter", loop.perimeter);
     j.begin_array("points");
     for (std::size_t k = 0; k < loop.half_edges.size() && k < options.loop_point_cap; ++k)
-      vec3(j, {}, mesh.vertices[mesh.corners[loop.half_edges[k]]]);
+      j.vec3(mesh.vertices[mesh.corners[loop.half_edges[k]]]);
     j.end_array();
     j.end_object();
   }
@@ -161,12 +152,8 @@ void write_check_fields(JsonWriter& j, const Mesh& mesh, const MeshSource& sourc
     j.end_array().end_object();
   }
   j.integer("list_cap", cap);
-  j.begin_array("notes");
-  for (const auto& n : r.notes) j.string(n);
-  j.end_array();
-  j.begin_array("warnings");
-  for (const auto& w : source.warnings) j.string(w);
-  j.end_array();
+  j.strings("notes", r.notes);
+  j.strings("warnings", source.warnings);
 }
 
 std::string check_json(const Mesh& mesh, const MeshSource& source, const TopologyReport& report,

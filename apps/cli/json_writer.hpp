@@ -3,10 +3,15 @@
 // written in order. Header-only so that every command (and the viewer server) can share it.
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <string>
 #include <string_view>
+#include <vector>
+
+#include "pgamesh/algebra/pga3.hpp"
+#include "pgamesh/algebra/vec3.hpp"
 
 namespace pgamesh::cli {
 
@@ -51,6 +56,34 @@ class JsonWriter {
     return *this;
   }
   JsonWriter& string(std::string_view v) { return string({}, v); }
+
+  // A 3-vector as [x, y, z].
+  JsonWriter& vec3(std::string_view key, const Vec3d& v) {
+    return begin_array(key).number(v.x).number(v.y).number(v.z).end_array();
+  }
+  JsonWriter& vec3(const Vec3d& v) { return vec3({}, v); }
+  // A 3×3 matrix as an array of its rows.
+  JsonWriter& matrix3(std::string_view key, const std::array<std::array<double, 3>, 3>& m) {
+    begin_array(key);
+    for (const auto& row : m)
+      begin_array().number(row[0]).number(row[1]).number(row[2]).end_array();
+    return end_array();
+  }
+  // A PGA3 plane (or a sum of face carriers) as {"e0", "e1", "e2", "e3"}.
+  JsonWriter& plane(std::string_view key, const pga3::Plane<double>& p) {
+    return begin_object(key)
+        .number("e0", p.e0)
+        .number("e1", p.e1)
+        .number("e2", p.e2)
+        .number("e3", p.e3)
+        .end_object();
+  }
+  // An array of strings (warnings, reasons, notes).
+  JsonWriter& strings(std::string_view key, const std::vector<std::string>& list) {
+    begin_array(key);
+    for (const auto& s : list) string(s);
+    return end_array();
+  }
 
   // The document written so far.
   const std::string& str() const { return out_; }

@@ -7,17 +7,6 @@ namespace pgamesh::cli {
 
 namespace {
 
-void vec(JsonWriter& w, std::string_view key, Vec3d v) {
-  w.begin_array(key).number(v.x).number(v.y).number(v.z).end_array();
-}
-
-void mat(JsonWriter& w, std::string_view key, const Mat3& m) {
-  w.begin_array(key);
-  for (const auto& row : m)
-    w.begin_array().number(row[0]).number(row[1]).number(row[2]).end_array();
-  w.end_array();
-}
-
 void products(JsonWriter& w, std::string_view key, const ProductsOfInertia& p) {
   w.begin_object(key).number("xy", p.xy).number("yz", p.yz).number("zx", p.zx).end_object();
 }
@@ -35,16 +24,15 @@ std::string props_json(const PropsReport& r) {
   w.number("volume", m.volume);
   w.number("density", m.density);
   w.number("mass", m.mass);
-  vec(w, "center_of_mass", m.center_of_mass);
-  mat(w, "inertia_com", m.inertia_com);
-  mat(w, "inertia_origin", m.inertia_origin);
+  w.vec3("center_of_mass", m.center_of_mass);
+  w.matrix3("inertia_com", m.inertia_com);
+  w.matrix3("inertia_origin", m.inertia_origin);
   w.begin_array("principal_moments");
   for (double v : m.principal.moments) w.number(v);
   w.end_array();
   if (solid) {
     w.begin_array("principal_axes");
-    for (const Vec3d& a : m.principal.axes)
-      w.begin_array().number(a.x).number(a.y).number(a.z).end_array();
+    for (const Vec3d& a : m.principal.axes) w.vec3(a);
     w.end_array();
   } else {
     w.null("principal_axes");
@@ -92,13 +80,8 @@ std::string props_json(const PropsReport& r) {
            "M = T R: M o ~M = centre of mass, M e_i ~M = principal axis i (directions); ~M takes "
            "the body into its principal frame");
   w.string("convention", inertia_convention);
-  vec(w, "reference_point", m.reference_point);
-  w.begin_object("carrier_sum")
-      .number("e0", m.carrier_sum.e0)
-      .number("e1", m.carrier_sum.e1)
-      .number("e2", m.carrier_sum.e2)
-      .number("e3", m.carrier_sum.e3)
-      .end_object();
+  w.vec3("reference_point", m.reference_point);
+  w.plane("carrier_sum", m.carrier_sum);
   if (r.topology) {
     const TopologyReport& t = *r.topology;
     w.begin_object("topology")
@@ -120,12 +103,8 @@ std::string props_json(const PropsReport& r) {
     w.boolean("meaningful", *r.meaningful);
   else
     w.null("meaningful");
-  w.begin_array("meaningful_reasons");
-  for (const auto& s : r.reasons) w.string(s);
-  w.end_array();
-  w.begin_array("warnings");
-  for (const auto& s : r.warnings) w.string(s);
-  w.end_array();
+  w.strings("meaningful_reasons", r.reasons);
+  w.strings("warnings", r.warnings);
   w.end_object();
   return w.str();
 }

@@ -4,14 +4,6 @@
 
 namespace pgamesh::viewer {
 
-namespace {
-
-void vec(cli::JsonWriter& w, std::string_view key, const Vec3d& v) {
-  w.begin_array(key).number(v.x).number(v.y).number(v.z).end_array();
-}
-
-}  // namespace
-
 std::string boundary_json(const TopologyReport& t) {
   cli::JsonWriter w;
   w.begin_object();
@@ -30,7 +22,7 @@ std::string boundary_json(const TopologyReport& t) {
   w.begin_array("loops");
   for (const BoundaryLoop& l : t.boundary_loops) {
     w.begin_object().number("area", l.area).number("perimeter", l.perimeter);
-    vec(w, "vector_area", l.vector_area);
+    w.vec3("vector_area", l.vector_area);
     w.end_object();
   }
   w.end_array();
