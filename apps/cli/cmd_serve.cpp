@@ -63,8 +63,12 @@ bool parse_port(std::string_view text, int& out) {
 
 int run_serve(int argc, char** argv) {
 #ifndef PGAMESH_WITH_VIEWER
-  (void)argc;
-  (void)argv;
+  // The usage still answers --help; everything else says why the command is missing.
+  if (argc > 1 && (std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "-h") == 0)) {
+    print_serve_help(stdout);
+    std::printf("\n(this build has no viewer)\n");
+    return 0;
+  }
   std::fprintf(stderr,
                "pgamesh serve: this build has no viewer (configure with "
                "-DPGAMESH_BUILD_VIEWER=ON and cpp-httplib installed)\n");
