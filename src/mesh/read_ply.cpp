@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstring>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "pgamesh/input_error.hpp"
@@ -81,8 +82,11 @@ U load_raw(const unsigned char* p, bool swap) {
   return u;
 }
 
-// One binary value of type t as double (coordinates) ...
-double load_double(const unsigned char* p, PlyType t, bool swap) {
+// One binary value of type t as T: double for coordinates, std::int64_t for counts and indices
+// (which must not pass through double; the header check allows only integer types for them, so a
+// floating-point type read as an integer gives 0 here and never occurs).
+template <class T>
+T load_as(const unsigned char* p, PlyType t, bool swap) {
   switch (t) {
     case PlyType::i8:
       return static_cast<std::int8_t>(p[0]);
@@ -97,31 +101,14 @@ double load_double(const unsigned char* p, PlyType t, bool swap) {
     case PlyType::u32:
       return load_raw<std::uint32_t>(p, swap);
     case PlyType::f32:
-      return std::bit_cast<float>(load_raw<std::uint32_t>(p, swap));
-    case PlyType::f64:
-      return std::bit_cast<double>(load_raw<std::uint64_t>(p, swap));
-    case PlyType::none:
+      if constexpr (std::is_floating_point_v<T>)
+        return std::bit_cast<float>(load_raw<std::uint32_t>(p, swap));
       break;
-  }
-  return 0;
-}
-
-// ... and as an integer (counts and indices; integer types only, checked in the header).
-std::int64_t load_integer(const unsigned char* p, PlyType t, bool swap) {
-  switch (t) {
-    case PlyType::i8:
-      return static_cast<std::int8_t>(p[0]);
-    case PlyType::u8:
-      return p[0];
-    case PlyType::i16:
-      return static_cast<std::int16_t>(load_raw<std::uint16_t>(p, swap));
-    case PlyType::u16:
-      return load_raw<std::uint16_t>(p, swap);
-    case PlyType::i32:
-      return static_cast<std::int32_t>(load_raw<std::uint32_t>(p, swap));
-    case PlyType::u32:
-      return load_raw<std::uint32_t>(p, swap);
-    default:
+    case PlyType::f64:
+      if constexpr (std::is_floating_point_v<T>)
+        return std::bit_cast<double>(load_raw<std::uint64_t>(p, swap));
+      break;
+    case PlyType::none:
       break;
   }
   return 0;
@@ -280,7 +267,7 @@ class BinaryReader {
   std::uint64_t list_count(const PlyProperty& prop, const std::string& what) {
     need(type_size(prop.count_type), what);
     const unsigned char* at = p_;
-    const std::int64_t n = load_integer(p_, prop.count_type, swap_);
+    const std::int64_t n = load_as<std::int64_t>(p_, prop.count_type, swap_);
     p_ += type_size(prop.count_type);
     if (n < 0) fail(at, "negative list length " + std::to_string(n) + " in " + what);
     const auto un = static_cast<std::uint64_t>(n);
@@ -341,7 +328,7 @@ void read_binary(const Header& h, const Layout& l, const TextCursor& c, Mesh& me
           for (int k = 0; k < 3; ++k) {
             const unsigned char* at = r.p_ + offset[k];
             const std::size_t ci = static_cast<std::size_t>(l.coord[k]);
-            v[k] = load_double(at, el.props[ci].type, swap);
+            v[k] = load_as<double>(at, el.props[ci].type, swap);
             if (!std::isfinite(v[k]))
               r.fail(at, "non-finite coordinate (NaN or infinity) in vertex " + std::to_string(i));
           }
@@ -352,7 +339,7 @@ void read_binary(const Header& h, const Layout& l, const TextCursor& c, Mesh& me
             r.skip_property(el.props[p], item_name(el, i));
             for (int k = 0; k < 3; ++k)
               if (static_cast<int>(p) == l.coord[k]) {
-                v[k] = load_double(at, el.props[p].type, swap);
+                v[k] = load_as<double>(at, el.props[p].type, swap);
                 if (!std::isfinite(v[k]))
                   r.fail(at,
                          "non-finite coordinate (NaN or infinity) in vertex " + std::to_string(i));
@@ -379,7 +366,7 @@ void read_binary(const Header& h, const Layout& l, const TextCursor& c, Mesh& me
             r.fail(at, "face " + std::to_string(i) + " with " + std::to_string(n) +
                            " vertices (a face needs at least 3)");
           for (std::uint64_t k = 0; k < n; ++k) {
-            const std::int64_t idx = load_integer(r.p_, ip.type, swap);
+            const std::int64_t idx = load_as<std::int64_t>(r.p_, ip.type, swap);
             if (idx < 0 || static_cast<std::uint64_t>(idx) >= nverts)
               r.fail(r.p_, "vertex index " + std::to_string(idx) + " of face " + std::to_string(i) +
                                " is out of range (" + std::to_string(nverts) + " vertices)");
