@@ -3,12 +3,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <fstream>
-#include <sstream>
 
 #include "pgamesh/geometry/inertia_frame.hpp"
 #include "pgamesh/mesh/mass_properties.hpp"
 #include "support/golden.hpp"
+#include "support/golden_mesh.hpp"
 
 using namespace pgamesh;
 using pgamesh::test::flatten;
@@ -17,56 +16,6 @@ using pgamesh::test::near_group;
 using pgamesh::test::near_scalar;
 
 namespace {
-
-// The golden OBJ files hold only "v x y z" and "f i j k" lines (1-based, exact float64 text).
-Mesh load_golden_obj(const std::string& relative) {
-  std::ifstream in(std::string(PGAMESH_GOLDEN_DIR) + "/" + relative);
-  if (!in) throw std::runtime_error("cannot open " + relative);
-  Mesh m;
-  std::string line;
-  while (std::getline(in, line)) {
-    std::istringstream s(line);
-    std::string tag;
-    s >> tag;
-    if (tag == "v") {
-      Vec3d v;
-      s >> v.x >> v.y >> v.z;
-      m.vertices.push_back(v);
-    } else if (tag == "f") {
-      std::uint32_t i;
-      while (s >> i) m.corners.push_back(i - 1);
-      m.face_offsets.push_back(static_cast<std::uint32_t>(m.corners.size()));
-    }
-  }
-  return m;
-}
-
-Mesh case_mesh(const json& input) {
-  Mesh m;
-  if (input.contains("vertices")) {
-    for (const auto& v : input["vertices"])
-      m.vertices.push_back({v[0].get<double>(), v[1].get<double>(), v[2].get<double>()});
-    for (const auto& f : input["faces"]) {
-      for (const auto& i : f) m.corners.push_back(i.get<std::uint32_t>());
-      m.face_offsets.push_back(static_cast<std::uint32_t>(m.corners.size()));
-    }
-  } else {
-    m = load_golden_obj(input["mesh_file"].get<std::string>());
-  }
-  if (input.contains("remove_faces")) {
-    std::vector<bool> drop(m.face_count(), false);
-    for (const auto& f : input["remove_faces"]) drop[f.get<std::size_t>()] = true;
-    Mesh kept;
-    kept.vertices = m.vertices;
-    for (std::size_t f = 0; f < m.face_count(); ++f) {
-      if (drop[f]) continue;
-      kept.corners.insert(kept.corners.end(), m.face(f), m.face(f) + m.face_size(f));
-      kept.face_offsets.push_back(static_cast<std::uint32_t>(kept.corners.size()));
-    }
-    m = kept;
-  }
-  return m;
-}
 
 std::vector<double> flat(const Mat3& m) {
   return {m[0][0], m[0][1], m[0][2], m[1][0], m[1][1], m[1][2], m[2][0], m[2][1], m[2][2]};
@@ -90,7 +39,7 @@ TEST(MassGolden, MeshProps) {
     SCOPED_TRACE(c["id"].get<std::string>());
     const auto tol = pgamesh::test::tolerance_of(file, c);
     const json& e = c["expected"];
-    const Mesh mesh = case_mesh(c["input"]);
+    const Mesh mesh = pgamesh::test::golden_case_mesh(c["input"]);
     MassOptions opt;
     if (c["input"].contains("density")) opt.density = c["input"]["density"].get<double>();
     const MassProperties p = mass_properties(mesh, opt);

@@ -8,6 +8,7 @@
 #include "pgamesh/mesh/read_mesh.hpp"
 #include "pgamesh/mesh/topology.hpp"
 #include "support/golden.hpp"
+#include "support/golden_mesh.hpp"
 
 namespace pgamesh {
 namespace {
@@ -16,33 +17,6 @@ using test::json;
 using test::near_group;
 using test::near_scalar;
 
-Mesh case_mesh(const json& input) {
-  Mesh m;
-  if (input.contains("vertices")) {
-    for (const auto& v : input["vertices"])
-      m.vertices.push_back({v[0].get<double>(), v[1].get<double>(), v[2].get<double>()});
-    for (const auto& f : input["faces"]) {
-      for (const auto& i : f) m.corners.push_back(i.get<std::uint32_t>());
-      m.face_offsets.push_back(static_cast<std::uint32_t>(m.corners.size()));
-    }
-  } else {
-    m = read_mesh(std::string(PGAMESH_GOLDEN_DIR) + "/" + input["mesh_file"].get<std::string>());
-  }
-  if (input.contains("remove_faces")) {
-    std::vector<bool> drop(m.face_count(), false);
-    for (const auto& f : input["remove_faces"]) drop[f.get<std::size_t>()] = true;
-    Mesh kept;
-    kept.vertices = m.vertices;
-    for (std::size_t f = 0; f < m.face_count(); ++f) {
-      if (drop[f]) continue;
-      kept.corners.insert(kept.corners.end(), m.face(f), m.face(f) + m.face_size(f));
-      kept.face_offsets.push_back(static_cast<std::uint32_t>(kept.corners.size()));
-    }
-    m = std::move(kept);
-  }
-  return m;
-}
-
 TEST(TopologyGolden, MeshPropsTopologyFields) {
   const json file = test::load_golden("mesh_props.json");
   int checked = 0;
@@ -50,7 +24,7 @@ TEST(TopologyGolden, MeshPropsTopologyFields) {
     SCOPED_TRACE(c["id"].get<std::string>());
     const json& e = c["expected"];
     const test::Tolerance tol = test::tolerance_of(file, c);
-    const TopologyReport r = analyze_topology(case_mesh(c["input"]));
+    const TopologyReport r = analyze_topology(test::golden_case_mesh(c["input"]));
     EXPECT_EQ(r.triangles, e["triangles"].get<std::size_t>());
     EXPECT_EQ(r.vertices, e["vertices"].get<std::size_t>());
     EXPECT_EQ(r.boundary_edges, e["boundary_edges"].get<std::size_t>());
@@ -74,7 +48,7 @@ TEST(TopologyGolden, MeshPropsTopologyFields) {
       // mass_props) accumulates about the mesh's first vertex and does not move the volume of an
       // open mesh, so its "signed_volume_about_origin" is V(vertex 0) (the origin itself for the
       // cubes); V(origin) is −e0/6 of the golden carrier sum.
-      const Mesh m = case_mesh(c["input"]);
+      const Mesh m = test::golden_case_mesh(c["input"]);
       auto volume_at = [&](Vec3d q) {
         return r.volume - dot(r.gap_vector, q - r.reference_point) / 3;
       };
@@ -111,7 +85,7 @@ TEST(TopologyGolden, EllipsoidWithFiveHolesHasFiveTriangularLoops) {
   // there the two holes touch, and the tracing splits the figure-eight into two loops.
   const Mesh full = read_mesh(std::string(PGAMESH_GOLDEN_DIR) + "/meshes/ellipsoid_L3.obj");
   json input = {{"mesh_file", "meshes/ellipsoid_L3.obj"}, {"remove_faces", {0, 1, 500, 900, 1201}}};
-  const TopologyReport r = analyze_topology(case_mesh(input));
+  const TopologyReport r = analyze_topology(test::golden_case_mesh(input));
   ASSERT_EQ(r.boundary_loops.size(), 5u);
   double removed_area = 0;
   for (std::size_t f : {0, 1, 500, 900, 1201}) {
