@@ -32,6 +32,18 @@ void put_vec(std::string& out, const Vec3d& v) {
   put_double(out, v.z);
 }
 
+// Faces as text lines "n i0 i1 … i(n−1)" with 0-based indices (OFF and ASCII PLY).
+void put_counted_faces(std::string& out, const Mesh& mesh) {
+  for (std::size_t f = 0; f < mesh.face_count(); ++f) {
+    put_uint(out, mesh.face_size(f));
+    for (std::size_t k = 0; k < mesh.face_size(f); ++k) {
+      out += ' ';
+      put_uint(out, mesh.face(f)[k]);
+    }
+    out += '\n';
+  }
+}
+
 template <class U>
 void put_raw(std::string& out, U u, bool big_endian) {
   if (big_endian != (std::endian::native == std::endian::big)) {
@@ -155,14 +167,7 @@ std::string off(const Mesh& mesh) {
     put_vec(out, v);
     out += '\n';
   }
-  for (std::size_t f = 0; f < mesh.face_count(); ++f) {
-    put_uint(out, mesh.face_size(f));
-    for (std::size_t k = 0; k < mesh.face_size(f); ++k) {
-      out += ' ';
-      put_uint(out, mesh.face(f)[k]);
-    }
-    out += '\n';
-  }
+  put_counted_faces(out, mesh);
   return out;
 }
 
@@ -191,14 +196,7 @@ std::string ply(const Mesh& mesh, MeshFormat format, const WriteOptions& o) {
         put_vec(out, v);
       out += '\n';
     }
-    for (std::size_t f = 0; f < mesh.face_count(); ++f) {
-      put_uint(out, mesh.face_size(f));
-      for (std::size_t k = 0; k < mesh.face_size(f); ++k) {
-        out += ' ';
-        put_uint(out, mesh.face(f)[k]);
-      }
-      out += '\n';
-    }
+    put_counted_faces(out, mesh);
     return out;
   }
   const bool big = format == MeshFormat::ply_binary_be;
