@@ -3,14 +3,13 @@
 // PGA3 fast path (body_moments), tetrahedral complexes, and 4-D complexes of 5-cells.
 #include <gtest/gtest.h>
 
-#include <fstream>
 #include <random>
-#include <sstream>
 
 #include "pgamesh/geometry/body_moments.hpp"
 #include "pgamesh/geometry/complex.hpp"
 #include "pgamesh/geometry/polygon2d.hpp"
 #include "support/golden.hpp"
+#include "support/golden_mesh.hpp"
 
 using namespace pgamesh;
 using geometry::Vec2;
@@ -23,49 +22,14 @@ struct TriMesh {
   std::vector<int> faces;  // 3 per triangle
 };
 
-// Minimal OBJ reading for the golden meshes (v / f lines with triangles, 1-based indices).
-TriMesh read_obj(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error("cannot open " + path);
-  TriMesh m;
-  std::string line;
-  while (std::getline(in, line)) {
-    std::istringstream s(line);
-    std::string tag;
-    s >> tag;
-    if (tag == "v") {
-      pgad::Vec<3> v;
-      s >> v[0] >> v[1] >> v[2];
-      m.vertices.push_back(v);
-    } else if (tag == "f") {
-      for (int i = 0; i < 3; ++i) {
-        std::string idx;
-        s >> idx;
-        m.faces.push_back(std::stoi(idx.substr(0, idx.find('/'))) - 1);
-      }
-    }
-  }
-  return m;
-}
-
+// The golden case as a triangle mesh of pgad points (the golden meshes are triangulated).
 TriMesh mesh_of_case(const json& input) {
+  const Mesh mesh = test::golden_case_mesh(input);
   TriMesh m;
-  if (input.contains("mesh_file")) {
-    m = read_obj(std::string(PGAMESH_GOLDEN_DIR) + "/" + input["mesh_file"].get<std::string>());
-  } else {
-    for (const auto& v : input["vertices"])
-      m.vertices.push_back({v[0].get<double>(), v[1].get<double>(), v[2].get<double>()});
-    for (const auto& f : input["faces"])
-      for (const auto& i : f) m.faces.push_back(i.get<int>());
-  }
-  if (input.contains("remove_faces")) {
-    std::vector<int> keep;
-    std::vector<int> removed = input["remove_faces"].get<std::vector<int>>();
-    for (std::size_t f = 0; f < m.faces.size() / 3; ++f)
-      if (std::find(removed.begin(), removed.end(), static_cast<int>(f)) == removed.end())
-        keep.insert(keep.end(), m.faces.begin() + static_cast<long>(3 * f),
-                    m.faces.begin() + static_cast<long>(3 * f + 3));
-    m.faces = keep;
+  for (const Vec3d& v : mesh.vertices) m.vertices.push_back({v.x, v.y, v.z});
+  for (std::size_t f = 0; f < mesh.face_count(); ++f) {
+    EXPECT_EQ(mesh.face_size(f), 3u) << "face " << f;
+    for (std::size_t k = 0; k < 3; ++k) m.faces.push_back(static_cast<int>(mesh.face(f)[k]));
   }
   return m;
 }
