@@ -3,11 +3,13 @@
 //
 // Each outward (CCW-from-outside) triangle (a, b, c), given relative to a reference point o, adds
 // the signed tetrahedron (o, a, b, c) with D = o ∨ a ∨ b ∨ c = o ∨ F = det(a, b, c) = 6 V_tet:
-//   volume        V   = (1/6)   Σ D                                   (paper Table 1, o on the
-//   left) first moment  ∫r  = (1/24)  Σ D (a + b + c + o)                   (paper eq. 5.3, ERRATA
-//   §0.2) second moment ∫rrᵀ = (1/120) Σ D (aaᵀ + bbᵀ + ccᵀ + s sᵀ), s = a+b+c (pyramid ref. eq.
-//   24: the 1/60
-//                   frame of paper eq. 5.5/5.6 summed over the vertex pairs is the same tensor)
+//   volume         V     = (1/6)   Σ D                        paper Table 1, o on the left
+//                                                              (ERRATA §0.2)
+//   first moment   ∫r    = (1/24)  Σ D (a + b + c + o)        paper eq. 5.3, ERRATA §0.2
+//   second moment  ∫rrᵀ  = (1/120) Σ D (aaᵀ + bbᵀ + ccᵀ + ssᵀ), s = a + b + c
+//                                                              pyramid reference eq. 24; the 1/60
+//                                                              frame of paper eqs. 5.5/5.6 summed
+//                                                              over vertex pairs is this tensor
 // The surface sums ride along: area ½ Σ ‖F‖ and the carrier sum Σ F, whose Euclidean norm is twice
 // the gap of an open surface (Cor. 4.1).
 //
