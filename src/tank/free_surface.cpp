@@ -41,4 +41,29 @@ FreeSurface free_surface(const FreeSurfaceSums& s, const SurfaceFrame& frame) {
   return out;
 }
 
+BoundarySums cone_over_surface(const FreeSurfaceSums& s, const SurfaceFrame& frame,
+                               Vec3d reference) {
+  const Vec3d o = frame.origin - reference;
+  const Vec3d up = cross(frame.axis1, frame.axis2);
+  const double h = dot(o, up);
+  const double area = s.area2 / 2;
+  // ∫s dA and ∫s sᵀ dA in plane coordinates about o′, then ∫x dA and ∫x xᵀ dA in space.
+  const Vec3d g = (s.first6[0] / 6) * frame.axis1 + (s.first6[1] / 6) * frame.axis2;
+  const double s11 = s.second24[0] / 24, s22 = s.second24[1] / 24, s12 = s.second24[2] / 24;
+  const Vec3d first = area * o + g;
+  const Vec3d& a = frame.axis1;
+  const Vec3d& b = frame.axis2;
+  auto second = [&](int i, int j) {
+    return area * o[i] * o[j] + o[i] * g[j] + g[i] * o[j] + s11 * a[i] * a[j] + s22 * b[i] * b[j] +
+           s12 * (a[i] * b[j] + b[i] * a[j]);
+  };
+  BoundarySums c;
+  c.volume6 = 2 * h * area;      // 6 V
+  c.moment24 = (6 * h) * first;  // 24 ∫r dV
+  const double k = 24 * h;       // 120 ∫rrᵀ dV
+  c.second120 = {k * second(0, 0), k * second(1, 1), k * second(2, 2),
+                 k * second(0, 1), k * second(1, 2), k * second(2, 0)};
+  return c;
+}
+
 }  // namespace pgamesh::tank

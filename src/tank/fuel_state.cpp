@@ -13,7 +13,7 @@ FuelState fuel_state(const Tank& tank, const FuelPlane& plane, const SliceContex
   }
   // The wall sums are about ctx.reference; so must the tank total be for the ullage side.
   BoundarySums body = wall;
-  if (ctx.cone_over_surface) body += sums.surface_cone;
+  if (ctx.cone_over_surface) body += cone_over_surface(sums.surface, ctx.frame, ctx.reference);
   const BodyMoments wm = body_moments(wall);
   const BodyMoments bm = body_moments(body);
   st.volume = bm.volume;

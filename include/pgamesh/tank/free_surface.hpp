@@ -10,6 +10,7 @@
 #include <array>
 
 #include "pgamesh/algebra/vec3.hpp"
+#include "pgamesh/geometry/body_moments.hpp"
 #include "pgamesh/tank/fuel_plane.hpp"
 
 namespace pgamesh::tank {
@@ -67,5 +68,15 @@ struct FreeSurface {
 
 /// The free surface from its boundary sums.
 FreeSurface free_surface(const FreeSurfaceSums& s, const SurfaceFrame& frame);
+
+/// The solid sums (volume6, moment24, second120 of BoundarySums; the surface fields stay 0) of
+/// the cone from `reference` over the free surface, from the surface's own moments: the cone
+/// {t x : x on the surface, 0 ≤ t ≤ 1} has dV = h t² dt dA with h = (o′ − reference)·up, so
+///   V = h A / 3,  ∫r dV = (h/4) ∫x dA,  ∫rrᵀ dV = (h/5) ∫xxᵀ dA   (x relative to the reference),
+/// and ∫x dA, ∫xxᵀ dA follow from area2, first6 and second24 with x = (o′ − reference) + s1 axis1 +
+/// s2 axis2. This equals the fan of tetrahedra (reference, o′, p, q) over the boundary segments
+/// (paper eq. 4.13 with o off the plane) at a constant cost instead of one tetrahedron a segment.
+BoundarySums cone_over_surface(const FreeSurfaceSums& s, const SurfaceFrame& frame,
+                               Vec3d reference);
 
 }  // namespace pgamesh::tank

@@ -1,7 +1,12 @@
-// Many levels for one up vector (a gauge table) by a sorted sweep: triangles sorted by their
-// lowest and highest vertex; as the level rises a triangle joins the crossing set when its lowest
-// vertex is reached and moves into the running sum of whole triangles when its highest is.
-// All N levels cost O(T log T + N + Σ crossings) instead of N full passes.
+// Many levels for one up vector (a gauge table) by a sweep over the sorted levels: each vertex is
+// ranked among the levels (binary search), each triangle bucketed by the ranks of its corners.
+// As the level rises a triangle joins the crossing set at the rank of its lowest corner, its
+// whole sums join a running sum at the rank of its middle corner (from there on the fuel holds
+// the triangle minus the small piece at its one dry corner, paper §4d), and it leaves the
+// crossing set at the rank of its highest corner. A level then costs one small tetrahedron and
+// one free-surface segment per crossing triangle, plus a constant for the cone over the free
+// surface (cone_over_surface): all N levels in O(T log N + N log N + Σ crossings) instead of N
+// full passes.
 #pragma once
 
 #include <functional>

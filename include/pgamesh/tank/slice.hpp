@@ -17,8 +17,8 @@ enum class Side { fuel, ullage };
 
 /// Where the sums are taken: the wall sums about `reference`; the free-surface sums in `frame`.
 /// When the reference is not on the plane, the cone from the reference over the (never built)
-/// free surface must be added to get the fuel body: `cone_over_surface` asks for it, as a fan of
-/// the cut segments from o′.
+/// free surface must be added to get the fuel body: `cone_over_surface` asks fuel_state for it
+/// (computed from the free-surface sums, free_surface.hpp).
 struct SliceContext {
   Vec3d reference{};
   SurfaceFrame frame;
@@ -26,9 +26,8 @@ struct SliceContext {
 };
 
 struct SliceSums {
-  BoundarySums wall;          // the kept triangles and split pieces (the wetted wall)
-  FreeSurfaceSums surface;    // the fuel's free surface, from its boundary segments
-  BoundarySums surface_cone;  // cone from the reference over the fuel's free surface
+  BoundarySums wall;        // the kept triangles and split pieces (the wetted wall)
+  FreeSurfaceSums surface;  // the fuel's free surface, from its boundary segments
 };
 
 /// s −= t, field by field (the sums are linear in the triangles).
@@ -40,6 +39,40 @@ void subtract(BoundarySums& s, const BoundarySums& t);
 /// point.
 inline Vec3d split_point(Vec3d lo, double d_lo, Vec3d hi, double d_hi) {
   return lo + (d_lo / (d_lo - d_hi)) * (hi - lo);
+}
+
+/// A triangle the plane crosses (one or two vertices in the fuel), cut at its odd vertex: `a` is
+/// the vertex alone on its side, `ab` and `ac` the split points on its edges to the next and the
+/// previous vertex, so (a, ab, ac) keeps the triangle's orientation. The fuel's free surface runs
+/// along the cut ac → ab when a is in the fuel and ab → ac otherwise (it closes the fuel wall).
+struct CutTriangle {
+  Vec3d a, ab, ac;
+  bool a_in_fuel = false;
+};
+
+/// Cuts the triangle v (heights d = p ∨ v, at least one ≤ 0 and one > 0). Split points are
+/// evaluated from their fuel-side end (split_point), so both triangles of an edge agree.
+inline CutTriangle cut_triangle(const Vec3d v[3], const double d[3]) {
+  const bool in0 = d[0] <= 0, in1 = d[1] <= 0, in2 = d[2] <= 0;
+  const bool odd_in = in0 + in1 + in2 == 1;
+  const int a = in0 == odd_in ? 0 : (in1 == odd_in ? 1 : 2);
+  const int b = a == 2 ? 0 : a + 1, c = a == 0 ? 2 : a - 1;
+  auto split = [&](int i, int j) {
+    return d[i] <= 0 ? split_point(v[i], d[i], v[j], d[j]) : split_point(v[j], d[j], v[i], d[i]);
+  };
+  return {v[a], split(a, b), split(a, c), odd_in};
+}
+
+/// The fuel's free-surface segment of a cut triangle, in plane coordinates (points relative to
+/// the reference, `origin` = o′ − reference).
+inline void add_surface_segment(FreeSurfaceSums& s, const SurfaceFrame& frame, Vec3d origin,
+                                const CutTriangle& t) {
+  const auto p = plane_coordinates(frame, t.ab - origin);
+  const auto q = plane_coordinates(frame, t.ac - origin);
+  if (t.a_in_fuel)
+    add_segment(s, q, p);
+  else
+    add_segment(s, p, q);
 }
 
 /// Adds the kept part of the triangle (v[0], v[1], v[2]) (coordinates relative to the context's
