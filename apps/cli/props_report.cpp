@@ -1,7 +1,10 @@
 #include "props_report.hpp"
 
+#include <utility>
+
 #include "pgamesh/mesh/mapped_file.hpp"
 #include "pgamesh/mesh/read_mesh.hpp"
+#include "pgamesh/mesh/stl_ascii_mass_properties.hpp"
 #include "pgamesh/mesh/stl_binary.hpp"
 #include "pgamesh/mesh/stl_mass_properties.hpp"
 
@@ -69,6 +72,21 @@ PropsReport props_of_bytes(std::span<const char> bytes, const std::string& name,
       r.warnings = r.mass.warnings;
       judge(r);
       return r;
+    }
+    // ASCII STL of plain triangular facets: parsed and summed in one pass; anything unusual
+    // (polygons, errors) goes to the careful reader below.
+    if (options.format != MeshFormat::unknown || detect_format(bytes) == MeshFormat::stl_ascii) {
+      if (auto mass = ascii_stl_mass_properties(bytes, name, options.mass)) {
+        PropsReport r;
+        r.file = name;
+        r.format = MeshFormat::stl_ascii;
+        r.streamed = true;
+        r.density_from_mass = options.mass.mass.has_value();
+        r.mass = std::move(*mass);
+        r.warnings = r.mass.warnings;
+        judge(r);
+        return r;
+      }
     }
   }
   MeshSource source;

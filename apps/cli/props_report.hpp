@@ -25,7 +25,7 @@ struct PropsReport {
   std::string file;
   MeshFormat format = MeshFormat::unknown;
   bool single_precision = false;
-  bool streamed = false;  // binary STL accumulated from its records, no Mesh built
+  bool streamed = false;  // STL accumulated straight from the file, no Mesh built
   MassProperties mass;
   std::optional<TopologyReport> topology;  // absent when not requested
   // False when the volume, centre of mass and inertia do not describe a solid (open, inconsistent,
