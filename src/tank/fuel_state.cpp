@@ -1,5 +1,7 @@
 #include "pgamesh/tank/fuel_state.hpp"
 
+#include <vector>
+
 namespace pgamesh::tank {
 
 FuelState fuel_state(const Tank& tank, const FuelPlane& plane, const SliceContext& ctx,
@@ -34,21 +36,29 @@ FuelState fuel_state(const Tank& tank, const FuelPlane& plane, const SliceContex
 }
 
 FuelState fuel_naive(const Tank& tank, const FuelPlane& plane) {
+  // The vertices' heights p ∨ v and the box of those in the fuel: o′ is the projection of its
+  // centre, so that the pieces are summed about a point near them (ERRATA §6) — about the tank's
+  // centre the fan from o′ over a small fill would cancel terms of the tank's size.
+  const pga3::Plane<double> p = plane.plane();
+  std::vector<double> d(tank.vertices.size());
+  VertexBox kept;
+  for (std::size_t i = 0; i < d.size(); ++i) {
+    d[i] = pga3::join(p, pga3::point(tank.vertices[i]));
+    if (d[i] <= 0) kept.add(tank.vertices[i]);
+  }
   SliceContext ctx;
-  ctx.frame = surface_frame(plane, tank.reference);
+  ctx.frame = surface_frame(plane, kept.empty() ? tank.reference : kept.center());
   ctx.reference = ctx.frame.origin;  // o′ on the plane: the free surface adds nothing (eq. 4.13)
   ctx.cone_over_surface = false;
   SliceSums sums;
-  const pga3::Plane<double> p = plane.plane();
   for (const auto& tri : tank.triangles) {
     Vec3d v[3];
-    double d[3];
+    double dt[3];
     for (int i = 0; i < 3; ++i) {
-      const Vec3d x = tank.vertices[tri[i]];
-      d[i] = pga3::join(p, pga3::point(x));
-      v[i] = x - ctx.reference;
+      v[i] = tank.vertices[tri[i]] - ctx.reference;
+      dt[i] = d[tri[i]];
     }
-    add_kept_part(sums, ctx, Side::fuel, v, d);
+    add_kept_part(sums, ctx, Side::fuel, v, dt);
   }
   return fuel_state(tank, plane, ctx, sums, Side::fuel);
 }

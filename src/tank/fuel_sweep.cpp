@@ -91,7 +91,18 @@ std::vector<FuelState> fuel_sweep(const Tank& tank, Vec3d up_in, std::span<const
     for (std::uint32_t t = 0; t < n; ++t) by_enter[fill[ranks[t][0]]++] = t;
   }
 
+  // Vertices by rank (counting sort): the box of the fuel-side vertices grows with the level.
+  std::vector<std::uint32_t> vertex_start(m + 2, 0);
+  for (std::size_t i = 0; i < nv; ++i) ++vertex_start[vertex_rank[i] + 1];
+  std::partial_sum(vertex_start.begin(), vertex_start.end(), vertex_start.begin());
+  std::vector<std::uint32_t> by_rank(nv);
+  {
+    std::vector<std::uint32_t> fill(vertex_start.begin(), vertex_start.end() - 1);
+    for (std::uint32_t i = 0; i < nv; ++i) by_rank[fill[vertex_rank[i]]++] = i;
+  }
+
   std::vector<FuelState> out(m);
+  VertexBox kept_box;
   BoundarySums two_in;  // triangles with at least two corners in the fuel, whole
   std::vector<Crossing> crossing;
   for (std::uint32_t k = 0; k < m; ++k) {
@@ -99,6 +110,8 @@ std::vector<FuelState> fuel_sweep(const Tank& tank, Vec3d up_in, std::span<const
     const FuelPlane plane{up, sorted[k]};  // up is already unit: keep its exact value
     const double level = plane.level;
     two_in += mid_bucket[k];
+    for (std::uint32_t i = vertex_start[k]; i < vertex_start[k + 1]; ++i)
+      kept_box.add(tank.vertices[by_rank[i]]);
     for (std::uint32_t i = enter_start[k]; i < enter_start[k + 1]; ++i) {
       const std::uint32_t t = by_enter[i];
       if (ranks[t][2] <= k) continue;  // never crosses a level: whole at once
@@ -113,9 +126,11 @@ std::vector<FuelState> fuel_sweep(const Tank& tank, Vec3d up_in, std::span<const
     ctx.frame = surface_frame(plane, r);
     SliceSums sums;
     if (k < first_whole || level <= lowest) {
-      // Only pieces (or faces lying in the lowest plane): sum them about o′ on the plane like the
-      // reference pass (eq. 4.13), which keeps every digit of a small fuel region (ERRATA §6).
+      // Only pieces (or faces lying in the lowest plane): sum them about o′ on the plane near the
+      // fuel-side vertices like the reference pass (eq. 4.13), which keeps every digit of a small
+      // fuel region (ERRATA §6).
       std::erase_if(crossing, [&](const Crossing& c) { return c.whole_from <= k; });
+      if (!kept_box.empty()) ctx.frame = surface_frame(plane, kept_box.center());
       ctx.reference = ctx.frame.origin;
       for (std::uint32_t i = 0; i < enter_start[k + 1]; ++i) {
         const auto& tri = tank.triangles[by_enter[i]];

@@ -36,6 +36,8 @@ Tank make_tank(const Mesh& mesh) {
                                     " has a vertex index out of range");
     for (std::size_t i = 1; i + 1 < k; ++i) t.triangles.push_back({c[0], c[i], c[i + 1]});
   }
+  // The whole tank's sums over the very triangles the slices cut, so that fuel + ullage = tank
+  // holds for the wall area too (a non-planar face's fan area is not its ½‖F‖, add_polygon).
   for (const auto& tri : t.triangles)
     add_triangle(t.total, t.vertices[tri[0]] - t.reference, t.vertices[tri[1]] - t.reference,
                  t.vertices[tri[2]] - t.reference);

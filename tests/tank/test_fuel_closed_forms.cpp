@@ -298,3 +298,61 @@ TEST(FuelClosedForms, PlanesThroughVerticesEdgesAndFaces) {
     EXPECT_NEAR(near.surface_area, st.surface_area, 1e-10);
   }
 }
+
+TEST(FuelClosedForms, ConcaveFacesGiveExactVolumesAndCentres) {
+  // An L-shaped prism (L area 3, height 1) whose caps are hexagons starting at a corner that does
+  // not see the whole L: their fan from the first corner has an inverted triangle, whose signed
+  // volume and moments cancel what the others overcount.
+  const double l[6][2] = {{2, 1}, {1, 1}, {1, 2}, {0, 2}, {0, 0}, {2, 0}};
+  Mesh m;
+  for (int z = 0; z < 2; ++z)
+    for (const auto& p : l) m.vertices.push_back({p[0], p[1], double(z)});
+  auto face = [&](std::vector<std::uint32_t> c) {
+    m.corners.insert(m.corners.end(), c.begin(), c.end());
+    m.face_offsets.push_back(static_cast<std::uint32_t>(m.corners.size()));
+  };
+  face({6, 7, 8, 9, 10, 11});  // top, counter-clockwise from above
+  face({0, 5, 4, 3, 2, 1});    // bottom, clockwise from above
+  for (std::uint32_t i = 0; i < 6; ++i) face({i, (i + 1) % 6, (i + 1) % 6 + 6, i + 6});
+  const Tank t = make_tank(m);
+  EXPECT_NEAR(t.volume, 3, 1e-14);
+  EXPECT_NEAR(t.gap_area, 0, 1e-14);
+  for (const Vec3d up : {Vec3d{0, 0, 1}, Vec3d{0, 1, 0}}) {
+    // Half the height along z: half the prism; along y: the rectangle [0,2]×[0,1] of the L.
+    const FuelState half = query(t, up, up.z ? 0.5 : 1.0);
+    EXPECT_NEAR(half.volume, up.z ? 1.5 : 2, 1e-14);
+    EXPECT_NEAR(half.surface_area, up.z ? 3 : 1, 1e-14);
+    const Vec3d com = up.z ? Vec3d{5.0 / 6, 5.0 / 6, 0.25} : Vec3d{1, 0.5, 0.5};
+    EXPECT_NEAR(length(half.center_of_mass - com), 0, 1e-14);
+  }
+}
+
+TEST(FuelClosedForms, TinyFillsOfAFarBoxAgainstTheExactCorner) {
+  // A unit box 1e6 from the origin tilted so that the fuel is a corner tetrahedron of legs
+  // s/up_i: V = s³ / (6 up_x up_y up_z), with s = level − up·corner. The reference point near the
+  // fuel keeps the fan from cancelling terms of the tank's size (ERRATA §6); what remains is the
+  // rounding of the heights up·x − level of absolute coordinates (ulp(1.7e6) = 2.3e-10 against s).
+  for (const double offset : {0.0, 1e6}) {
+    Mesh m = box(1, 1, 1);
+    for (auto& v : m.vertices) v = v + Vec3d{offset, -offset, offset};
+    const Tank t = make_tank(m);
+    const Vec3d up = unit_up({0.3, 0.5, 0.8});
+    const Vec3d corner{offset - 0.5, -offset - 0.5, offset - 0.5};
+    for (const double s : {1e-2, 1e-4, 1e-6}) {
+      const double level = dot(up, corner) + s;
+      // s from the level as stored: its rounding is part of the question asked.
+      const long double se =
+          static_cast<long double>(level) -
+          (static_cast<long double>(up.x) * corner.x + static_cast<long double>(up.y) * corner.y +
+           static_cast<long double>(up.z) * corner.z);
+      const double exact = static_cast<double>(se * se * se / (6.0L * up.x * up.y * up.z));
+      const FuelState f = query(t, up, level);
+      const double heights = 4 * 2.3e-10 * (offset > 0) / s;  // relative error of s
+      SCOPED_TRACE(offset);
+      SCOPED_TRACE(s);
+      EXPECT_NEAR(f.volume / exact, 1, 1e-9 + 3 * heights);
+      const Vec3d com = corner + Vec3d{s / (4 * up.x), s / (4 * up.y), s / (4 * up.z)};
+      EXPECT_NEAR(length(f.center_of_mass - com), 0, 1e-9 * s + 4.7e-10 * (offset > 0));
+    }
+  }
+}

@@ -31,9 +31,10 @@ struct FuelState {
 FuelState fuel_state(const Tank& tank, const FuelPlane& plane, const SliceContext& ctx,
                      const SliceSums& sums, Side side);
 
-/// The reference pass: every triangle cut about o′ = the projection of the tank's reference point
-/// onto the plane (ERRATA §0.2 eq. 4.13 corrected: V = (1/6) o′ ∨ F, COM from eq. 5.4
-/// corrected). Costs one pass over the whole mesh.
+/// The reference pass: every triangle cut about o′ = the projection onto the plane of the centre
+/// of the fuel-side vertices' box (ERRATA §6: near the kept part; the tank's reference point when
+/// no vertex is fuel), ERRATA §0.2 eq. 4.13 corrected: V = (1/6) o′ ∨ F, COM from eq. 5.4
+/// corrected. Costs one pass over the vertices (heights) and one over the triangles.
 FuelState fuel_naive(const Tank& tank, const FuelPlane& plane);
 
 }  // namespace pgamesh::tank
