@@ -1,6 +1,7 @@
 // `pgamesh fuel FILE --up X,Y,Z (--level H | --volume V | --fraction F | --table N |
 // --volumes V1,V2,...) [--pitch DEG[,DEG...]] [--roll DEG[,DEG...]] [--accel AX,AY,AZ]
-// [--json | --csv] [--force]`: fuel gauging of a closed tank (DESIGN.md §5, docs/fuel.md).
+// [--density RHO | --mass M] [--json | --csv] [--force]`: fuel gauging of a closed tank (DESIGN.md
+// §5, docs/fuel.md).
 #include <unistd.h>
 
 #include <charconv>
@@ -9,6 +10,7 @@
 #include <exception>
 #include <memory>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -19,6 +21,7 @@
 #include "json_writer.hpp"
 #include "pgamesh/input_error.hpp"
 #include "pgamesh/mesh/read_mesh.hpp"
+#include "pgamesh/mesh/topology.hpp"
 #include "pgamesh/tank/attitude.hpp"
 #include "pgamesh/tank/fuel_index.hpp"
 #include "pgamesh/tank/fuel_sweep.hpp"
@@ -51,10 +54,15 @@ void print_fuel_help(std::FILE* out) {
       "  --accel AX,AY,AZ   apparent gravity in the tank frame (e.g. 0,0,-9.81 at rest):\n"
       "                     up = -accel/|accel|; replaces --up, --pitch and --roll\n"
       "\n"
+      "mass (as in pgamesh props):\n"
+      "  --density RHO      mass per unit volume (default 1: mass = volume)\n"
+      "  --mass M           mass of the full tank instead; the density is M / tank volume\n"
+      "\n"
       "output:\n"
       "  --json             one JSON object on stdout\n"
       "  --csv              CSV with a commented header (tables and volume lists)\n"
-      "  --force            compute even when the mesh is open or inside out\n");
+      "  --force            compute even when the mesh is open, inconsistently oriented\n"
+      "                     or inside out (the same topology report as pgamesh check)\n");
 }
 
 struct Options {
@@ -69,6 +77,7 @@ struct Options {
   double value = 0;
   int table = 0;
   std::vector<double> volumes;
+  std::optional<double> density, mass;
   bool json = false, csv = false, force = false;
 };
 
@@ -145,6 +154,10 @@ Options parse(int argc, char** argv) {
     } else if (arg == "--volumes") {
       set_query(Options::Query::volumes);
       o.volumes = parse_list(arg, value());
+    } else if (arg == "--density") {
+      o.density = parse_number(arg, value());
+    } else if (arg == "--mass") {
+      o.mass = parse_number(arg, value());
     } else if (arg == "--json") {
       o.json = true;
     } else if (arg == "--csv") {
@@ -163,6 +176,7 @@ Options parse(int argc, char** argv) {
   if (o.query == Options::Query::none)
     throw UsageError("give one of --level, --volume, --fraction, --table, --volumes");
   if (o.json && o.csv) throw UsageError("--json and --csv exclude each other");
+  if (o.density && o.mass) throw UsageError("give --density or --mass, not both");
   if (o.accel_given && (o.up_given || o.attitude))
     throw UsageError("--accel gives the up vector: do not combine it with --up, --pitch, --roll");
   if (o.pitch.size() * o.roll.size() > 100000) throw UsageError("at most 100000 attitudes");
@@ -192,10 +206,34 @@ std::string fmt(double v) {
   return buf;
 }
 
-void write_header(JsonWriter& w, const Options& o, const tank::Tank& t) {
+// Whether the mesh is fit to be a tank, from the topology report `pgamesh check` and `props` use.
+struct TankCheck {
+  TopologyReport topology;
+  bool fit = false;
+  bool forced = false;  // unfit, computed anyway (--force)
+};
+
+void write_header(JsonWriter& w, const Options& o, const tank::Tank& t, const TankCheck& check,
+                  double density) {
   w.string("file", o.file);
   w.integer("triangles", t.triangles.size());
   w.number("tank_volume", t.volume);
+  w.number("density", density);
+  w.number("tank_mass", density * t.volume);
+  const TopologyReport& r = check.topology;
+  w.begin_object("topology");
+  w.boolean("closed", r.closed);
+  w.boolean("orientation_consistent", r.orientation_consistent);
+  w.integer("boundary_edges", r.boundary_edges);
+  w.integer("nonmanifold_edges", r.nonmanifold_edges);
+  w.integer("inconsistent_edges", r.inconsistent_edges);
+  w.number("gap_area", r.gap_area);
+  w.boolean("volume_valid", r.volume_valid);
+  w.begin_array("notes");
+  for (const auto& note : r.notes) w.string(note);
+  w.end_array();
+  w.end_object();
+  w.boolean("forced", check.forced);
   write_fuel_conventions(w);
 }
 
@@ -207,11 +245,14 @@ void write_attitude(JsonWriter& w, const Options& o, const Attitude& a) {
   }
 }
 
-void print_state(const tank::FuelState& st, const tank::LevelRange& range) {
+void print_state(const tank::FuelState& st, const tank::LevelRange& range, double density) {
   std::printf("  level           %s (tank from %s to %s along up)\n", fmt(st.plane.level).c_str(),
               fmt(range.lowest).c_str(), fmt(range.highest).c_str());
   std::printf("  volume          %s (fraction %s), ullage %s\n", fmt(st.volume).c_str(),
               fmt(st.fraction).c_str(), fmt(st.ullage_volume).c_str());
+  if (density != 1)
+    std::printf("  mass            %s (density %s)\n", fmt(density * st.volume).c_str(),
+                fmt(density).c_str());
   if (st.has_center)
     std::printf("  centre of mass  %s %s %s\n", fmt(st.center_of_mass.x).c_str(),
                 fmt(st.center_of_mass.y).c_str(), fmt(st.center_of_mass.z).c_str());
@@ -221,23 +262,31 @@ void print_state(const tank::FuelState& st, const tank::LevelRange& range) {
               fmt(st.surface.second[0]).c_str());
 }
 
-// The tank must be closed and outward for the fuel figures to mean anything.
-bool check_tank(const Options& o, const tank::Tank& t) {
-  std::string problem;
-  if (t.gap_area > 1e-9 * t.area)
-    problem = "the mesh is open: gap area " + fmt(t.gap_area) + " (" + fmt(t.gap_area / t.area) +
-              " of its area)";
-  else if (!(t.volume > 0))
-    problem = "the mesh is inside out or flat (signed volume " + fmt(t.volume) + ")";
-  if (problem.empty()) return true;
-  if (o.force) {
-    std::fprintf(stderr, "%s: warning: %s; computing anyway (--force)\n", o.file.c_str(),
-                 problem.c_str());
-    return true;
-  }
-  std::fprintf(stderr, "%s: %s; a tank must be closed and outward-oriented (--force to proceed)\n",
-               o.file.c_str(), problem.c_str());
-  return false;
+// The tank must be closed, consistently oriented and outward for the fuel figures to mean
+// anything: judged by the topology report of `pgamesh check` (analyze_topology), and refused with
+// its figures and its wording (the notes `pgamesh props` prints) unless --force.
+TankCheck check_tank(const Options& o, const Mesh& mesh, const tank::Tank& t) {
+  TankCheck c;
+  c.topology = analyze_topology(mesh);
+  const TopologyReport& r = c.topology;
+  c.fit = r.closed && r.orientation_consistent && r.volume_valid && t.volume > 0;
+  if (c.fit) return c;
+  c.forced = o.force;
+  std::fprintf(stderr,
+               "%s: %s: closed %s, orientation %s, %zu boundary edges, %zu non-manifold, %zu "
+               "inconsistent, gap area %.17g, volume %.17g\n",
+               o.file.c_str(), o.force ? "warning: not a closed outward tank" : "not a tank",
+               r.closed ? "yes" : "no", r.orientation_consistent ? "consistent" : "INCONSISTENT",
+               r.boundary_edges, r.nonmanifold_edges, r.inconsistent_edges, r.gap_area, t.volume);
+  for (const auto& note : r.notes) std::fprintf(stderr, "%s: %s\n", o.file.c_str(), note.c_str());
+  if (!(t.volume > 0))
+    std::fprintf(stderr, "%s: the signed volume %.17g is not positive (inside out or flat)\n",
+                 o.file.c_str(), t.volume);
+  std::fprintf(stderr,
+               o.force ? "%s: computing anyway (--force)\n"
+                       : "%s: a tank must be closed and outward-oriented (--force to proceed)\n",
+               o.file.c_str());
+  return c;
 }
 
 int run(const Options& o) {
@@ -249,21 +298,29 @@ int run(const Options& o) {
     std::fprintf(stderr, "%s: %s\n", o.file.c_str(), e.what());
     return 1;
   }
-  if (!check_tank(o, t)) return 1;
+  const TankCheck check = check_tank(o, mesh, t);
+  if (!check.fit && !check.forced) return 1;
+  if (o.mass && !(t.volume > 0)) {
+    std::fprintf(stderr, "%s: --mass needs a tank with a positive volume\n", o.file.c_str());
+    return 1;
+  }
+  // --mass M is the mass of the full tank (as `pgamesh props --mass` is the mesh's).
+  const double density = o.mass ? *o.mass / t.volume : o.density.value_or(1.0);
   const std::vector<Attitude> atts = attitudes(o);
   const bool grid = atts.size() > 1;
   const bool tty = isatty(fileno(stderr));
   JsonWriter w;
   w.begin_object();
-  write_header(w, o, t);
+  write_header(w, o, t, check, density);
   if (grid) w.begin_array("attitudes");
   if (o.csv) {
     std::printf(
         "# pgamesh fuel: %s\n# fuel is up.x <= level (up a unit vector, tank frame x "
         "forward, y left, z up); ullage_length = highest point - level\n"
         "# units: lengths in the mesh unit L, areas L^2, volumes L^3, moments of area "
-        "L^4; density 1\n# tank_volume %.17g\n",
-        o.file.c_str(), t.volume);
+        "L^4; mass = density x volume in the unit of the density times L^3\n"
+        "# density %.17g\n# tank_volume %.17g\n",
+        o.file.c_str(), density, t.volume);
   }
   const bool csv_attitude = o.attitude || grid;
   std::unique_ptr<tank::FuelIndex> index;
@@ -297,12 +354,13 @@ int run(const Options& o) {
         const tank::FuelState st = tank::fuel_naive(t, tank::FuelPlane{a.up, o.value});
         if (o.csv) {
           if (ai == 0) std::printf("%s\n", fuel_csv_columns(csv_attitude).c_str());
-          std::printf("%s\n",
-                      fuel_csv_row(st, range, csv_attitude, a.pitch_deg, a.roll_deg).c_str());
+          std::printf(
+              "%s\n",
+              fuel_csv_row(st, range, csv_attitude, a.pitch_deg, a.roll_deg, density).c_str());
         } else if (o.json) {
-          write_fuel_state(w, st, range);
+          write_fuel_state(w, st, range, density);
         } else {
-          print_state(st, range);
+          print_state(st, range, density);
         }
         break;
       }
@@ -324,17 +382,18 @@ int run(const Options& o) {
           const tank::LevelSolution s = tank::level_for_volume(*index, a.up, v);
           const tank::FuelState st = index->query(tank::FuelPlane{a.up, s.level});
           if (o.csv) {
-            std::printf("%.17g,%d,%s\n", v, s.iterations,
-                        fuel_csv_row(st, range, csv_attitude, a.pitch_deg, a.roll_deg).c_str());
+            std::printf(
+                "%.17g,%d,%s\n", v, s.iterations,
+                fuel_csv_row(st, range, csv_attitude, a.pitch_deg, a.roll_deg, density).c_str());
           } else if (o.json) {
             if (o.query == Options::Query::volumes) w.begin_object();
             w.number("target_volume", v);
             w.integer("iterations", static_cast<unsigned long long>(s.iterations));
-            write_fuel_state(w, st, range);
+            write_fuel_state(w, st, range, density);
             if (o.query == Options::Query::volumes) w.end_object();
           } else {
             std::printf("  target volume   %s (%d fuel queries)\n", fmt(v).c_str(), s.iterations);
-            print_state(st, range);
+            print_state(st, range, density);
           }
         }
         if (o.query == Options::Query::volumes) w.end_array();
@@ -351,13 +410,14 @@ int run(const Options& o) {
         if (o.csv) {
           if (ai == 0) std::printf("%s\n", fuel_csv_columns(csv_attitude).c_str());
           for (const auto& st : rows)
-            std::printf("%s\n",
-                        fuel_csv_row(st, range, csv_attitude, a.pitch_deg, a.roll_deg).c_str());
+            std::printf(
+                "%s\n",
+                fuel_csv_row(st, range, csv_attitude, a.pitch_deg, a.roll_deg, density).c_str());
         } else if (o.json) {
           w.begin_array("rows");
           for (const auto& st : rows) {
             w.begin_object();
-            write_fuel_state(w, st, range);
+            write_fuel_state(w, st, range, density);
             w.end_object();
           }
           w.end_array();

@@ -20,15 +20,21 @@ std::string num(double v) {
 
 }  // namespace
 
-void write_fuel_state(JsonWriter& w, const tank::FuelState& st, const tank::LevelRange& range) {
+void write_fuel_state(JsonWriter& w, const tank::FuelState& st, const tank::LevelRange& range,
+                      double density) {
   w.number("level", st.plane.level);
   w.number("volume", st.volume);
   w.number("fraction", st.fraction);
+  w.number("mass", density * st.volume);
   if (st.has_center) {
     write_vec(w, "center_of_mass", st.center_of_mass);
     w.begin_array("inertia_com");
     for (const auto& row : st.inertia_com)
-      w.begin_array().number(row[0]).number(row[1]).number(row[2]).end_array();
+      w.begin_array()
+          .number(density * row[0])
+          .number(density * row[1])
+          .number(density * row[2])
+          .end_array();
     w.end_array();
   } else {
     w.null("center_of_mass");
@@ -70,7 +76,9 @@ void write_fuel_conventions(JsonWriter& w) {
            "pitch about the lateral axis, positive nose up, then roll about the forward axis, "
            "positive right side down; degrees; up = (sin p, sin r cos p, cos r cos p) for a level "
            "up of +z");
-  w.string("density", "1 (mass = volume)");
+  w.string("density",
+           "mass per unit volume (top-level density; 1 unless --density or --mass): mass = "
+           "density x volume, inertia = density x the volume's second moments");
   w.string("inertia",
            "tensor about the centre of mass, off-diagonals are minus the products of "
            "inertia (I_xy = -integral of x y dV)");
@@ -80,8 +88,8 @@ void write_fuel_conventions(JsonWriter& w) {
            "[[int s1^2, int s1 s2], [int s1 s2, int s2^2]] dA about the surface centroid; "
            "transverse = int s2^2 (about axis1), longitudinal = int s1^2 (about axis2)");
   w.string("units",
-           "lengths in the mesh file's unit L: areas L^2, volumes L^3, inertia L^5, "
-           "moments of area L^4");
+           "lengths in the mesh file's unit L: areas L^2, volumes L^3, moments of area L^4, "
+           "mass in the density's unit times L^3, inertia mass x L^2");
   w.end_object();
 }
 
@@ -90,11 +98,11 @@ std::string fuel_csv_columns(bool attitude) {
   return s +
          "level,volume,fraction,com_x,com_y,com_z,wetted_area,surface_area,"
          "surface_moment_transverse,surface_moment_longitudinal,surface_moment_product,"
-         "ullage_length,ullage_volume";
+         "ullage_length,ullage_volume,mass";
 }
 
 std::string fuel_csv_row(const tank::FuelState& st, const tank::LevelRange& range, bool attitude,
-                         double pitch_deg, double roll_deg) {
+                         double pitch_deg, double roll_deg, double density) {
   std::string s;
   if (attitude) s += num(pitch_deg) + "," + num(roll_deg) + ",";
   const double nan = std::nan("");
@@ -102,7 +110,7 @@ std::string fuel_csv_row(const tank::FuelState& st, const tank::LevelRange& rang
   const auto& m = st.surface.second;
   for (double v :
        {st.plane.level, st.volume, st.fraction, c.x, c.y, c.z, st.wetted_area, st.surface_area,
-        m[1], m[0], m[2], range.highest - st.plane.level, st.ullage_volume})
+        m[1], m[0], m[2], range.highest - st.plane.level, st.ullage_volume, density * st.volume})
     s += num(v) + ",";
   s.pop_back();
   return s;

@@ -220,3 +220,69 @@ TEST(FuelCli, Errors) {
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.err.find("/nonexistent/tank.obj"), std::string::npos) << r.err;
 }
+
+TEST(FuelCli, TopologyFromTheSharedReportRefusesInconsistentMeshes) {
+  // The unit cube with one top triangle turned over: closed by its edges' count, but two edges
+  // are used twice in one direction. Refused with the figures and notes of `pgamesh check`.
+  const auto path = std::filesystem::temp_directory_path() /
+                    ("pgamesh_fuel_flipped_" + std::to_string(::getpid()) + ".obj");
+  {
+    std::ifstream in(golden_mesh("unit_cube.obj"));
+    std::ofstream out(path);
+    std::string line;
+    while (std::getline(in, line)) out << (line == "f 5 6 8" ? "f 5 8 6" : line) << "\n";
+  }
+  CliRun r = run_cli(path.string() + " --level 0.5 --json");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("orientation INCONSISTENT"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("orientation inconsistent: 3 edges"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--force"), std::string::npos) << r.err;
+  r = run_cli(path.string() + " --level 0.5 --json --force");
+  ASSERT_EQ(r.status, 0) << r.err;
+  json out = json::parse(r.out);
+  EXPECT_TRUE(out["forced"].get<bool>());
+  EXPECT_FALSE(out["topology"]["orientation_consistent"].get<bool>());
+  EXPECT_EQ(out["topology"]["inconsistent_edges"].get<int>(), 3);
+  std::filesystem::remove(path);
+
+  // A good tank says so.
+  r = run_cli(golden_mesh("unit_cube.obj") + " --level 0.5 --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  out = json::parse(r.out);
+  EXPECT_FALSE(out["forced"].get<bool>());
+  EXPECT_TRUE(out["topology"]["closed"].get<bool>());
+  EXPECT_EQ(out["topology"]["boundary_edges"].get<int>(), 0);
+  EXPECT_EQ(out["topology"]["gap_area"].get<double>(), 0);
+}
+
+TEST(FuelCli, DensityAndMassScaleMassAndInertia) {
+  // Unit cube half full: volume 1/2, the box [0,1]×[0,1]×[0,½]: I_xx = ρ V (1 + ¼)/12 about its
+  // centre of mass, I_zz = ρ V (1 + 1)/12.
+  const std::string cube = golden_mesh("unit_cube.obj");
+  for (const std::string& option : {std::string("--density 800"), std::string("--mass 800")}) {
+    CliRun r = run_cli(cube + " --level 0.5 --json " + option);
+    ASSERT_EQ(r.status, 0) << r.err;
+    const json out = json::parse(r.out);
+    EXPECT_NEAR(out["density"].get<double>(), 800, 1e-12);
+    EXPECT_NEAR(out["tank_mass"].get<double>(), 800, 1e-12);
+    EXPECT_NEAR(out["mass"].get<double>(), 400, 1e-12);
+    EXPECT_NEAR(out["inertia_com"][0][0].get<double>(), 400 * 1.25 / 12, 1e-10);
+    EXPECT_NEAR(out["inertia_com"][2][2].get<double>(), 400 * 2.0 / 12, 1e-10);
+    EXPECT_NEAR(out["inertia_com"][0][1].get<double>(), 0, 1e-10);
+  }
+  CliRun r = run_cli(cube + " --table 2 --csv --density 2.5");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("# density 2.5\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("ullage_volume,mass\n"), std::string::npos) << r.out;
+  // The middle row: volume 0.5, mass 1.25 in the last column.
+  std::istringstream in(r.out);
+  std::string line;
+  std::vector<std::string> rows;
+  while (std::getline(in, line))
+    if (!line.empty() && line[0] != '#' && line[0] != 'l') rows.push_back(line);
+  ASSERT_EQ(rows.size(), 3u);
+  EXPECT_NEAR(std::stod(rows[1].substr(rows[1].rfind(',') + 1)), 1.25, 1e-12);
+  r = run_cli(cube + " --level 0.5 --density 1 --mass 2");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("not both"), std::string::npos) << r.err;
+}
