@@ -37,7 +37,8 @@ struct PropsReport {
 };
 
 // Reads `path` and computes its report. Binary STL without topology is streamed from the mapped
-// file (mesh/stl_mass_properties.hpp). Throws InputError for unreadable input.
+// file (mesh/stl_mass_properties.hpp); with exact-weld topology it is welded from its records
+// (mesh/welded_triangles.hpp) and no Mesh is built. Throws InputError for unreadable input.
 PropsReport props_of_file(const std::string& path, const PropsOptions& options);
 
 // The same for bytes already in memory (an upload); `name` names them in errors and the report.

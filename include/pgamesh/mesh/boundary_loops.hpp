@@ -34,4 +34,12 @@ std::vector<BoundaryLoop> boundary_loops(const Mesh& mesh, const WeldMap& weld,
                                          std::span<const std::uint32_t> welded_corner,
                                          const EdgeTable& edges, Vec3d reference);
 
+// The same tracing for boundary sides given directly: sides[i] is a boundary half-edge (its corner;
+// ascending), running from welded vertex tails[i] to heads[i]; positions[w] are the welded
+// vertices' coordinates. boundary_loops() and the triangle pass (triangle_topology.hpp) share it.
+std::vector<BoundaryLoop> trace_boundary_loops(std::span<const std::uint32_t> sides,
+                                               std::span<const std::uint32_t> tails,
+                                               std::span<const std::uint32_t> heads,
+                                               std::span<const Vec3d> positions, Vec3d reference);
+
 }  // namespace pgamesh

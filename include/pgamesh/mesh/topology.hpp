@@ -106,8 +106,14 @@ struct TopologyReport {
 
 // Welds (exactly, or within options.weld_tolerance), builds the edges and reports on them. Throws
 // std::out_of_range for corner indices beyond the vertex list and std::invalid_argument for a bad
-// option; the mesh itself may be anything (empty, open, non-manifold, degenerate).
+// option; the mesh itself may be anything (empty, open, non-manifold, degenerate). A mesh of
+// triangles only takes the triangle pass (triangle_topology.hpp), any other the polygon pass
+// below; both give the same report.
 TopologyReport analyze_topology(const Mesh& mesh, const TopologyOptions& options = {});
+
+// The pass for faces of any size: weld_map, build_edges, face_components, duplicated_faces and
+// boundary_loops, each over the whole mesh.
+TopologyReport analyze_polygon_topology(const Mesh& mesh, const TopologyOptions& options = {});
 
 // A mesh's structure is usable: face_offsets starts at 0, ascends and ends at corners.size(), and
 // every corner names an existing vertex. Throws std::out_of_range otherwise.

@@ -1,0 +1,57 @@
+// A welded triangle mesh in its leanest form: the welded vertices' coordinates and three welded
+// vertex indices per triangle. It is what the fast topology pass (triangle_topology.hpp) reads, and
+// a binary STL is welded into it straight from its float32 records, without building a Mesh of
+// three fresh double vertices per facet first (4× smaller, and the file's pages can be released as
+// the weld passes them).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "pgamesh/algebra/vec3.hpp"
+#include "pgamesh/mesh/mass_properties.hpp"
+#include "pgamesh/mesh/mesh.hpp"
+#include "pgamesh/mesh/stl_binary.hpp"
+
+namespace pgamesh {
+
+struct WeldedTriangles {
+  std::vector<Vec3d> positions;               // welded vertex → its representative's coordinates
+  std::vector<std::uint32_t> representative;  // welded vertex → its lowest input vertex index
+  std::vector<std::uint32_t> corners;         // three welded vertex indices per triangle
+  std::size_t input_vertices = 0;             // vertices before the weld
+  std::size_t merged = 0;                     // input − welded vertices
+  double max_moved = 0;                       // as in WeldMap
+  double tolerance = 0;
+
+  std::size_t triangle_count() const { return corners.size() / 3; }
+};
+
+// Whether every face of `mesh` is a triangle (and there is at least one face).
+bool all_triangles(const Mesh& mesh);
+
+// Welds a mesh whose faces are all triangles (weld_map of weld.hpp, same numbering). Throws
+// std::invalid_argument when a face is not a triangle and std::out_of_range for a corner index
+// beyond the vertex list.
+WeldedTriangles weld_triangles(const Mesh& mesh, double tolerance = 0);
+
+// Welds the records of a binary STL exactly: input vertex 3 i + k is vertex k of record i (the
+// numbering read_mesh gives), and vertices merge when their float32 bit patterns are equal, −0
+// folded to +0 — the same classes, numbering and representatives as weld_map on the read mesh.
+// With `release_records`, the pages of records already welded are returned to the kernel as the
+// pass goes (madvise MADV_DONTNEED; only for a read-only file mapping, whose pages are re-read
+// from the file if touched again). Throws InputError naming `name` for a non-finite coordinate
+// (check_binary_stl_finite) or more vertices than 32-bit indices can hold.
+WeldedTriangles weld_binary_stl(const BinaryStlView& view, const std::string& name,
+                                bool release_records = false);
+
+// Mass properties of the welded triangles about `reference`, accumulated exactly as
+// mass_properties() accumulates the unwelded mesh (same faces, same coordinates, same chunking):
+// the figures are the same bit for bit. faces = triangles, vertices = input_vertices; with
+// `single_precision`, the float32 far-from-origin warning when it applies.
+MassProperties mass_properties(const WeldedTriangles& mesh, Vec3d reference,
+                               const MassOptions& options, bool single_precision);
+
+}  // namespace pgamesh

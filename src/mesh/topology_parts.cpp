@@ -1,0 +1,226 @@
+#include "topology_parts.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "pgamesh/geometry/gap.hpp"
+#include "pgamesh/geometry/polygon_face.hpp"
+
+namespace pgamesh::detail {
+
+namespace {
+
+std::string format_double(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", x);
+  return buf;
+}
+
+// Notes that say in plain words what the numbers mean for this mesh (docs/topology.md).
+void write_notes(TopologyReport& r) {
+  auto n = [](std::size_t k) { return std::to_string(k); };
+  if (r.faces == 0) r.notes.push_back("empty mesh: no faces");
+  if (r.boundary_edges > 0)
+    r.notes.push_back("open: " + n(r.boundary_edges) + " boundary edges in " +
+                      n(r.boundary_loops.size()) + " loops, gap area " + format_double(r.gap_area) +
+                      "; volume, centre of mass and inertia are not meaningful. Capping the holes "
+                      "gives a volume between " +
+                      format_double(r.volume_min) + " and " + format_double(r.volume_max));
+  if (!r.orientation_consistent)
+    r.notes.push_back("orientation inconsistent: " + n(r.inconsistent_edges) +
+                      " edges are used twice in the same direction; volume, centre of mass and "
+                      "inertia are not meaningful (--fix-orientation repairs this)");
+  if (r.duplicated_area_faces > 0)
+    r.notes.push_back("duplicated faces: " + n(r.duplicated_faces) +
+                      " faces repeat an earlier face's vertices; their volume counts twice or "
+                      "cancels, so volume, centre of mass and inertia are not meaningful");
+  else if (r.duplicated_faces > 0)
+    r.notes.push_back("duplicated faces: " + n(r.duplicated_faces) +
+                      " faces repeat an earlier face's vertices, all with zero area: no effect on "
+                      "area or volume");
+  if (r.nonmanifold_edges > 0)
+    r.notes.push_back("non-manifold: " + n(r.nonmanifold_edges) +
+                      " edges are shared by more than two faces; the volume is the sum over the "
+                      "pieces that meet there");
+  if (r.negative_components > 0)
+    r.notes.push_back("inward: " + n(r.negative_components) +
+                      " closed components have negative volume (faces oriented inward; "
+                      "--fix-orientation makes them outward)");
+  if (r.zero_area_faces + r.small_area_faces > 0)
+    r.notes.push_back("degenerate faces: " + n(r.zero_area_faces) + " with zero area, " +
+                      n(r.small_area_faces) + " nearly zero; they do not change area or volume");
+  if (r.components > 1) r.notes.push_back(n(r.components) + " connected components");
+}
+
+// The mean of the face's corners.
+Vec3d face_centroid(const WeldedFaces& mesh, std::uint32_t f) {
+  const std::uint32_t begin = mesh.begin(f), k = mesh.size(f);
+  Vec3d c{};
+  for (std::uint32_t i = 0; i < k; ++i) c += mesh.corner_position(begin + i);
+  return k > 0 ? c / static_cast<double>(k) : c;
+}
+
+// 2 × the face's vector area about its own first corner (polygon_normal): exact zero for a face
+// whose corners are collinear in the digits they have.
+Vec3d own_normal(const WeldedFaces& mesh, std::uint32_t f) {
+  const std::uint32_t begin = mesh.begin(f);
+  return polygon_normal(mesh.size(f), [&](std::size_t i) {
+    return mesh.corner_position(begin + static_cast<std::uint32_t>(i));
+  });
+}
+
+}  // namespace
+
+void check_topology_options(const TopologyOptions& options) {
+  if (!(options.area_threshold >= 0) || !std::isfinite(options.area_threshold))
+    throw std::invalid_argument("area threshold must be a finite number >= 0");
+}
+
+void tally_face(TopologyTally& t, std::uint32_t f, bool collapsed, std::uint32_t component) {
+  TopologyReport& r = t.r;
+  const WeldedFaces& mesh = t.mesh;
+  const std::uint32_t begin = mesh.begin(f), k = mesh.size(f);
+  const Vec3d ref = r.reference_point;
+  if (k >= 3) r.triangles += k - 2;
+  const BoundarySums s = polygon_face_sums(k, [&](std::size_t i) {
+    return mesh.corner_position(begin + static_cast<std::uint32_t>(i)) - ref;
+  });
+  t.total += s;
+  if (component != no_edge) {
+    t.components[component].area += s.area2 / 2;
+    t.volume6[component] += s.volume6;
+  }
+  // Degenerate faces are judged on the normal about the face's own first corner (digits).
+  const Vec3d n = own_normal(mesh, f);
+  const bool zero = collapsed || (n.x == 0 && n.y == 0 && n.z == 0);
+  const double own_area = 0.5 * length(n);
+  bool small = false;
+  if (!zero) {
+    double longest2 = 0;
+    for (std::uint32_t i = 0; i < k; ++i) {
+      const Vec3d d = mesh.corner_position(begin + (i + 1) % k) - mesh.corner_position(begin + i);
+      longest2 = std::max(longest2, dot(d, d));
+    }
+    small = own_area <= t.area_threshold * longest2;
+  }
+  if (!zero && !small) return;
+  FaceLocation loc;
+  loc.face = f;
+  loc.area = own_area;
+  loc.centroid = face_centroid(mesh, f);
+  if (zero) {
+    if (r.zero_area_faces++ < t.cap) r.zero_area_list.push_back(loc);
+  } else {
+    if (r.small_area_faces++ < t.cap) r.small_area_list.push_back(loc);
+  }
+}
+
+void tally_edge(TopologyTally& t, std::uint32_t v0, std::uint32_t v1, std::uint32_t face,
+                std::size_t uses, std::size_t forward, std::uint32_t component) {
+  TopologyReport& r = t.r;
+  auto location = [&] {
+    EdgeLocation loc;
+    loc.face = face;
+    loc.vertex0 = t.mesh.representative[v0];
+    loc.vertex1 = t.mesh.representative[v1];
+    loc.p0 = t.mesh.positions[v0];
+    loc.p1 = t.mesh.positions[v1];
+    loc.face_count = static_cast<std::uint32_t>(uses);
+    return loc;
+  };
+  const std::size_t backward = uses - forward;
+  const std::size_t imbalance = forward > backward ? forward - backward : backward - forward;
+  ComponentSummary& comp = t.components[component];
+  if (uses == 1) {
+    ++comp.boundary_edges;
+    if (r.boundary_edges++ < t.cap) r.boundary_edge_list.push_back(location());
+    return;
+  }
+  // Uses pair up in opposite directions; an odd one out is allowed for an odd count.
+  if (imbalance > uses % 2) {
+    ++comp.inconsistent_edges;
+    if (r.inconsistent_edges++ < t.cap) r.inconsistent_edge_list.push_back(location());
+  }
+  if (uses > 2) {
+    ++comp.nonmanifold_edges;
+    if (r.nonmanifold_edges++ < t.cap) r.nonmanifold_edge_list.push_back(location());
+  }
+}
+
+void finish_report(TopologyTally& t,
+                   std::span<const std::pair<std::uint32_t, std::uint32_t>> duplicates,
+                   std::vector<BoundaryLoop> loops) {
+  TopologyReport& r = t.r;
+  const Vec3d ref = r.reference_point;
+  const BodyMoments moments = body_moments(t.total);
+  r.area = moments.area;
+  r.volume = moments.volume;
+  r.gap_area = moments.gap_area;
+  r.gap_vector = gap_vector(t.total);
+  r.carrier_sum = t.total.carrier_sum;
+  // About the origin: a carrier built from a − ref has e0 = −n·(a − ref) = e0(origin) + n·ref.
+  r.carrier_sum.e0 -= dot(t.total.carrier_sum.normal(), ref);
+
+  // The range of V(q) over the vertices q, for an open surface: V is affine in q, so its extremes
+  // over the mesh's convex hull are at vertices (gap.hpp). A closed surface's Σ F has no normal
+  // part beyond rounding, and V does not depend on q.
+  r.volume_min = r.volume_max = r.volume;
+  if (r.boundary_edges > 0) {
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (const Vec3d& p : t.mesh.positions) {
+      const double v = volume_about(t.total, p - ref);
+      if (!std::isfinite(v)) continue;
+      lo = std::min(lo, v);
+      hi = std::max(hi, v);
+    }
+    if (lo <= hi) {
+      r.volume_min = lo;
+      r.volume_max = hi;
+    }
+  }
+
+  r.orientation_consistent = r.inconsistent_edges == 0;
+  r.closed = r.faces > 0 && r.edges > 0 && r.boundary_edges == 0 && r.nonmanifold_edges == 0 &&
+             r.inconsistent_edges == 0;
+
+  r.components = t.components.size();
+  for (std::size_t k = 0; k < t.components.size(); ++k) {
+    ComponentSummary& s = t.components[k];
+    s.volume = t.volume6[k] / 6;
+    s.closed = s.boundary_edges == 0 && s.nonmanifold_edges == 0 && s.inconsistent_edges == 0;
+    if (s.closed) ++r.closed_components;
+    if (s.closed && s.volume < 0) ++r.negative_components;
+    if (k < t.cap) r.component_list.push_back(s);
+  }
+
+  r.duplicated_faces = duplicates.size();
+  for (const auto& d : duplicates) {
+    const Vec3d n = own_normal(t.mesh, d.first);  // duplicated faces are never collapsed
+    r.duplicated_area_faces += (n.x == 0 && n.y == 0 && n.z == 0) ? 0 : 1;
+  }
+  for (std::size_t i = 0; i < duplicates.size() && i < t.cap; ++i) {
+    FaceLocation loc;
+    loc.face = duplicates[i].first;
+    loc.same_as = duplicates[i].second;
+    const std::uint32_t begin = t.mesh.begin(loc.face), k = t.mesh.size(loc.face);
+    const BoundarySums s = polygon_face_sums(k, [&](std::size_t j) {
+      return t.mesh.corner_position(begin + static_cast<std::uint32_t>(j)) - ref;
+    });
+    loc.area = s.area2 / 2;
+    loc.centroid = face_centroid(t.mesh, loc.face);
+    r.duplicated_list.push_back(loc);
+  }
+
+  r.boundary_loops = std::move(loops);
+  for (const BoundaryLoop& loop : r.boundary_loops) r.loops_area += loop.area;
+
+  r.volume_valid = r.faces > 0 && r.boundary_edges == 0 && r.orientation_consistent &&
+                   r.duplicated_area_faces == 0;
+  write_notes(r);
+}
+
+}  // namespace pgamesh::detail

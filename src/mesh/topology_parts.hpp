@@ -1,0 +1,68 @@
+// The parts of the topology pass that the polygon pass (topology.cpp) and the triangle pass
+// (triangle_topology.cpp) share: how a face and an edge count in the report, and how the report
+// is finished. Both passes feed them the same faces and edges in the same order, so they give the
+// same report bit for bit. Internal to the library.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <utility>
+#include <vector>
+
+#include "pgamesh/geometry/body_moments.hpp"
+#include "pgamesh/mesh/topology.hpp"
+
+namespace pgamesh::detail {
+
+// A welded mesh as the shared parts see it.
+struct WeldedFaces {
+  std::span<const Vec3d> positions;               // welded vertex → coordinates
+  std::span<const std::uint32_t> representative;  // welded vertex → lowest input vertex
+  std::span<const std::uint32_t> corners;         // corner → welded vertex
+  std::span<const std::uint32_t> face_offsets;    // CSR; empty when every face is a triangle
+
+  std::uint32_t begin(std::size_t f) const {
+    return face_offsets.empty() ? static_cast<std::uint32_t>(3 * f) : face_offsets[f];
+  }
+  std::uint32_t size(std::size_t f) const {
+    return face_offsets.empty() ? 3 : face_offsets[f + 1] - face_offsets[f];
+  }
+  Vec3d corner_position(std::uint32_t c) const { return positions[corners[c]]; }
+};
+
+// The sums a report is built from, face by face and edge by edge.
+struct TopologyTally {
+  TopologyTally(TopologyReport& report, const WeldedFaces& faces, const TopologyOptions& options)
+      : r(report), mesh(faces), cap(options.list_cap), area_threshold(options.area_threshold) {}
+
+  TopologyReport& r;
+  const WeldedFaces& mesh;
+  std::size_t cap;
+  double area_threshold;
+  std::vector<ComponentSummary> components;  // first_face and faces filled by the caller
+  std::vector<double> volume6;               // per component, Σ o ∨ F
+  BoundarySums total;
+};
+
+// Throws std::invalid_argument for a bad option.
+void check_topology_options(const TopologyOptions& options);
+
+// Face f (component `component`, or no_edge): its sums about r.reference_point, its triangle count
+// and whether it has zero or small area. Call in face order.
+void tally_face(TopologyTally& t, std::uint32_t f, bool collapsed, std::uint32_t component);
+
+// The edge {v0 < v1} with `uses` half-edges, `forward` of them running v0 → v1, lowest face
+// `face` in `component`: boundary, inconsistent, non-manifold. Call in edge order ((v0, v1)
+// ascending); edges used twice in opposite directions may be left out.
+void tally_edge(TopologyTally& t, std::uint32_t v0, std::uint32_t v1, std::uint32_t face,
+                std::size_t uses, std::size_t forward, std::uint32_t component);
+
+// After every face and edge: totals, gap and volume range, closedness, components, the duplicated
+// faces (face, earlier face with the same vertices; ascending by face), the boundary loops and the
+// notes.
+void finish_report(TopologyTally& t,
+                   std::span<const std::pair<std::uint32_t, std::uint32_t>> duplicates,
+                   std::vector<BoundaryLoop> loops);
+
+}  // namespace pgamesh::detail

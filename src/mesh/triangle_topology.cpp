@@ -1,0 +1,184 @@
+#include "pgamesh/mesh/triangle_topology.hpp"
+
+#include <algorithm>
+#include <utility>
+#include <vector>
+
+#include "pgamesh/mesh/boundary_loops.hpp"
+#include "topology_parts.hpp"
+
+namespace pgamesh {
+
+namespace {
+
+// Union–find whose root is always the lowest face of its set (union by index, path halving), as in
+// components.cpp.
+std::uint32_t find_root(std::vector<std::uint32_t>& parent, std::uint32_t x) {
+  while (parent[x] != x) {
+    parent[x] = parent[parent[x]];
+    x = parent[x];
+  }
+  return x;
+}
+
+// An edge that is not used exactly twice in opposite directions, kept until the components are
+// known.
+struct OddEdge {
+  std::uint32_t v0, v1, face, uses, forward;
+};
+
+}  // namespace
+
+TopologyReport analyze_welded_triangles(const WeldedTriangles& mesh, Vec3d reference,
+                                        const TopologyOptions& options) {
+  detail::check_topology_options(options);
+  TopologyReport r;
+  const std::size_t face_count = mesh.triangle_count();
+  const std::size_t vertex_count = mesh.positions.size();
+  const std::uint32_t* corner = mesh.corners.data();
+  r.faces = face_count;
+  r.input_vertices = mesh.input_vertices;
+  r.vertices = vertex_count;
+  r.merged_vertices = mesh.merged;
+  r.weld_tolerance = mesh.tolerance;
+  r.weld_max_moved = mesh.max_moved;
+  r.area_threshold = options.area_threshold;
+  r.reference_point = reference;
+  const detail::WeldedFaces faces{mesh.positions, mesh.representative, mesh.corners, {}};
+  detail::TopologyTally tally(r, faces, options);
+
+  // A triangle is collapsed when two of its corners weld to one vertex (edges.hpp).
+  auto collapsed = [&](std::size_t f) {
+    const std::uint32_t a = corner[3 * f], b = corner[3 * f + 1], c = corner[3 * f + 2];
+    return a == b || b == c || c == a;
+  };
+  // Half-edge h = 3 f + k runs from corner h to corner 3 f + (k + 1) % 3.
+  auto head = [&](std::uint32_t h) { return corner[h % 3 == 2 ? h - 2 : h + 1]; };
+
+  // Counting sort of the half-edges of non-collapsed triangles by their lower end; `start` first
+  // counts, then (after the fill, shifted back) holds each vertex's bucket start.
+  std::vector<std::uint32_t> start(vertex_count + 1, 0);
+  {
+    std::vector<std::uint8_t> referenced(vertex_count, 0);
+    for (std::size_t f = 0; f < face_count; ++f) {
+      for (int k = 0; k < 3; ++k) referenced[corner[3 * f + k]] = 1;
+      if (collapsed(f)) {
+        ++r.collapsed_faces;
+        continue;
+      }
+      for (std::uint32_t h = static_cast<std::uint32_t>(3 * f); h < 3 * f + 3; ++h)
+        ++start[std::min(corner[h], head(h)) + 1];
+    }
+    r.unreferenced_vertices =
+        static_cast<std::size_t>(std::count(referenced.begin(), referenced.end(), std::uint8_t{0}));
+  }
+  for (std::size_t v = 0; v < vertex_count; ++v) start[v + 1] += start[v];
+  std::vector<std::uint32_t> bucket(start[vertex_count]);
+  for (std::size_t f = 0; f < face_count; ++f) {
+    if (collapsed(f)) continue;
+    for (std::uint32_t h = static_cast<std::uint32_t>(3 * f); h < 3 * f + 3; ++h)
+      bucket[start[std::min(corner[h], head(h))]++] = h;  // ascending within a bucket
+  }
+  for (std::size_t v = vertex_count; v > 0; --v) start[v] = start[v - 1];
+  start[0] = 0;
+
+  // Each vertex's bucket grouped by upper end: one group per edge, edges in (v0, v1) order.
+  std::vector<std::uint32_t> parent(face_count);
+  for (std::size_t f = 0; f < face_count; ++f) parent[f] = static_cast<std::uint32_t>(f);
+  std::vector<OddEdge> odd;
+  std::vector<std::uint32_t> sides;                                 // boundary half-edges
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> duplicates;  // (face, earlier face)
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> group;       // (upper end, half-edge)
+  std::size_t edge_count = 0;
+  for (std::uint32_t v = 0; v < vertex_count; ++v) {
+    group.clear();
+    for (std::uint32_t i = start[v]; i < start[v + 1]; ++i) {
+      const std::uint32_t h = bucket[i];
+      group.emplace_back(std::max(corner[h], head(h)), h);
+    }
+    if (group.size() <= 16) {
+      for (std::size_t i = 1; i < group.size(); ++i)  // insertion sort: stable, tiny input
+        for (std::size_t j = i; j > 0 && group[j - 1].first > group[j].first; --j)
+          std::swap(group[j - 1], group[j]);
+    } else {
+      std::stable_sort(group.begin(), group.end(),
+                       [](const auto& x, const auto& y) { return x.first < y.first; });
+    }
+    for (std::size_t i = 0; i < group.size();) {
+      const std::uint32_t upper = group[i].first;
+      std::size_t end = i + 1;
+      while (end < group.size() && group[end].first == upper) ++end;
+      ++edge_count;
+      const std::uint32_t first_face = group[i].second / 3;
+      std::uint32_t forward = 0, root = find_root(parent, first_face);
+      for (std::size_t j = i; j < end; ++j) {
+        const std::uint32_t h = group[j].second;
+        forward += corner[h] == v ? 1 : 0;
+        const std::uint32_t g = find_root(parent, h / 3);
+        if (g != root) {
+          parent[std::max(g, root)] = std::min(g, root);
+          root = std::min(g, root);
+        }
+        // Two triangles on this edge are the same vertex set when their third vertices agree;
+        // each face is matched on its first side (k = 0) against the lower faces on it, the
+        // lowest match first (the half-edges ascend), so each duplicate names the lowest copy.
+        if (h % 3 == 0) {
+          const std::uint32_t third = corner[h + 2];
+          for (std::size_t m = i; m < j; ++m) {
+            const std::uint32_t o = group[m].second;
+            if (corner[3 * (o / 3) + (o % 3 + 2) % 3] == third) {
+              duplicates.emplace_back(h / 3, o / 3);
+              break;
+            }
+          }
+        }
+      }
+      const auto uses = static_cast<std::uint32_t>(end - i);
+      if (uses == 1) sides.push_back(group[i].second);
+      if (uses != 2 || forward != 1) odd.push_back({v, upper, first_face, uses, forward});
+      i = end;
+    }
+  }
+  r.edges = edge_count;
+  bucket = {};
+  start = {};
+
+  // Components numbered by their lowest face. Every parent pointer points down (parent[f] ≤ f,
+  // equal at a root) and stays within its set, so one ascending pass overwrites the parent array
+  // with the numbers: parent[f] < f has already been given its component's number.
+  std::vector<std::uint32_t>& component = parent;
+  for (std::size_t f = 0; f < face_count; ++f) {
+    if (collapsed(f)) {
+      component[f] = no_edge;  // no edges, no component; nothing points at it
+      continue;
+    }
+    const std::uint32_t p = parent[f];
+    if (p == f) {
+      component[f] = static_cast<std::uint32_t>(tally.components.size());
+      tally.components.push_back({});
+      tally.components.back().first_face = static_cast<std::uint32_t>(f);
+    } else {
+      component[f] = component[p];
+    }
+    ++tally.components[component[f]].faces;
+  }
+  tally.volume6.assign(tally.components.size(), 0.0);
+
+  for (std::size_t f = 0; f < face_count; ++f)
+    detail::tally_face(tally, static_cast<std::uint32_t>(f), collapsed(f), component[f]);
+  for (const OddEdge& e : odd)
+    detail::tally_edge(tally, e.v0, e.v1, e.face, e.uses, e.forward, component[e.face]);
+
+  std::sort(duplicates.begin(), duplicates.end());
+  std::sort(sides.begin(), sides.end());
+  std::vector<std::uint32_t> tails(sides.size()), heads(sides.size());
+  for (std::size_t i = 0; i < sides.size(); ++i) {
+    tails[i] = corner[sides[i]];
+    heads[i] = head(sides[i]);
+  }
+  detail::finish_report(tally, duplicates,
+                        trace_boundary_loops(sides, tails, heads, mesh.positions, reference));
+  return r;
+}
+
+}  // namespace pgamesh

@@ -1,0 +1,189 @@
+// The exact weld of a binary STL straight from its records (welded_triangles.hpp): the 96-bit
+// pattern of each float32 triple is the key of an open-addressing hash table, so no Mesh of
+// doubles is built and every record is read once.
+#include <sys/mman.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cstring>
+
+#include "pgamesh/input_error.hpp"
+#include "pgamesh/mesh/welded_triangles.hpp"
+
+namespace pgamesh {
+
+namespace {
+
+using Key = std::array<std::uint32_t, 3>;
+
+inline std::uint32_t load_le32(const unsigned char* p) {
+  std::uint32_t u;
+  std::memcpy(&u, p, 4);
+  if constexpr (std::endian::native == std::endian::big) u = __builtin_bswap32(u);
+  return u;
+}
+
+// MurmurHash3's 64-bit finaliser (as in weld.cpp): every key bit affects every slot bit.
+inline std::uint64_t mix64(std::uint64_t h) {
+  h ^= h >> 33;
+  h *= 0xff51afd7ed558ccdULL;
+  h ^= h >> 33;
+  h *= 0xc4ceb9fe1a85ec53ULL;
+  h ^= h >> 33;
+  return h;
+}
+
+// The key with −0 folded to +0 (the bits of −0 are 0x80000000), so that the two zeros weld while
+// every other value welds only with itself.
+inline Key folded(Key k) {
+  for (std::uint32_t& u : k) u = u == 0x80000000u ? 0u : u;
+  return k;
+}
+
+// Hash of the folded key.
+inline std::uint64_t hash_of(Key k) {
+  k = folded(k);
+  return mix64(((std::uint64_t{k[0]} << 32) | k[1]) ^ mix64(k[2] + 0x9e3779b97f4a7c15ULL));
+}
+
+// Vertex k of the record at r as float32 bits. Returns false for NaN or infinity (all exponent
+// bits set).
+inline bool vertex_key(const unsigned char* r, int k, Key& key) {
+  bool finite = true;
+  for (int j = 0; j < 3; ++j) {
+    std::uint32_t u = load_le32(r + 12 + 12 * k + 4 * j);
+    finite &= (u & 0x7f800000u) != 0x7f800000u;
+    key[j] = u;
+  }
+  return finite;
+}
+
+// Open addressing with linear probing; a slot holds (upper 32 hash bits << 32) | (id + 1), 0 =
+// empty, so almost every non-matching slot is rejected without touching the key array.
+class KeyTable {
+ public:
+  explicit KeyTable(std::size_t expected) {
+    std::size_t cap = 64;
+    while (cap < 2 * expected) cap *= 2;
+    slots_.assign(cap, 0);
+    mask_ = cap - 1;
+  }
+
+  const std::uint64_t* slot_address(std::uint64_t h) const { return &slots_[h & mask_]; }
+
+  // The id of `k` (hash h), appending it to `keys` when it is new. Keys keep their own bits (the
+  // representative's coordinates, −0 included) and compare folded.
+  std::uint32_t find_or_insert(const Key& k, std::uint64_t h, std::vector<Key>& keys,
+                               bool& inserted) {
+    const std::uint64_t tag = h >> 32;
+    for (std::size_t pos = h & mask_;; pos = (pos + 1) & mask_) {
+      const std::uint64_t s = slots_[pos];
+      if (s == 0) {
+        const auto id = static_cast<std::uint32_t>(keys.size());
+        keys.push_back(k);
+        slots_[pos] = (tag << 32) | (std::uint64_t{id} + 1);
+        inserted = true;
+        if (2 * keys.size() > slots_.size()) grow(keys);
+        return id;
+      }
+      if ((s >> 32) == tag) {
+        const auto id = static_cast<std::uint32_t>((s & 0xffffffffULL) - 1);
+        if (folded(keys[id]) == folded(k)) {
+          inserted = false;
+          return id;
+        }
+      }
+    }
+  }
+
+ private:
+  void grow(const std::vector<Key>& keys) {
+    std::vector<std::uint64_t> old(slots_.size() * 2, 0);
+    old.swap(slots_);
+    mask_ = slots_.size() - 1;
+    for (std::size_t id = 0; id < keys.size(); ++id) {
+      const std::uint64_t h = hash_of(keys[id]);
+      std::size_t pos = h & mask_;
+      while (slots_[pos] != 0) pos = (pos + 1) & mask_;
+      slots_[pos] = ((h >> 32) << 32) | (std::uint64_t{id} + 1);
+    }
+  }
+
+  std::vector<std::uint64_t> slots_;
+  std::size_t mask_ = 0;
+};
+
+// Gives the pages of [from, to) back to the kernel, page-aligned inwards.
+void release_pages(const unsigned char* from, const unsigned char* to) {
+  const auto page = static_cast<std::uintptr_t>(sysconf(_SC_PAGESIZE));
+  const std::uintptr_t begin = (reinterpret_cast<std::uintptr_t>(from) + page - 1) & ~(page - 1);
+  const std::uintptr_t end = reinterpret_cast<std::uintptr_t>(to) & ~(page - 1);
+  if (end > begin) madvise(reinterpret_cast<void*>(begin), end - begin, MADV_DONTNEED);
+}
+
+}  // namespace
+
+WeldedTriangles weld_binary_stl(const BinaryStlView& view, const std::string& name,
+                                bool release_records) {
+  if (3 * view.count > 0xFFFFFFFFull)
+    throw InputError(name, InputPosition{0, 0, 80, false},
+                     std::to_string(view.count) + " triangles exceed the 32-bit vertex indices");
+  const std::size_t n = 3 * static_cast<std::size_t>(view.count);
+  WeldedTriangles w;
+  w.input_vertices = n;
+  w.corners.resize(n);
+  // A closed STL shares each vertex among about six corners: start for n / 4 classes and grow.
+  KeyTable table(n / 4 + 16);
+  std::vector<Key> keys;
+  keys.reserve(n / 4 + 16);
+  w.representative.reserve(n / 4 + 16);
+
+  // The table is larger than the caches: hash a few vertices ahead and prefetch their slots.
+  constexpr std::size_t ahead = 16;
+  std::array<std::uint64_t, 32> ring{};
+  std::array<Key, 32> ring_key{};
+  bool finite = true;
+  auto record = [&](std::size_t i) { return view.records + stl_record_bytes * (i / 3); };
+  for (std::size_t i = 0; i < std::min(ahead, n); ++i) {
+    finite &= vertex_key(record(i), static_cast<int>(i % 3), ring_key[i & 31]);
+    ring[i & 31] = hash_of(ring_key[i & 31]);
+  }
+  constexpr std::size_t release_step = std::size_t{1} << 22;  // bytes of records per madvise
+  const unsigned char* released = view.records;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (i + ahead < n) {
+      const std::size_t j = i + ahead;
+      finite &= vertex_key(record(j), static_cast<int>(j % 3), ring_key[j & 31]);
+      ring[j & 31] = hash_of(ring_key[j & 31]);
+      __builtin_prefetch(table.slot_address(ring[j & 31]));
+    }
+    bool inserted = false;
+    const std::uint32_t id = table.find_or_insert(ring_key[i & 31], ring[i & 31], keys, inserted);
+    w.corners[i] = id;
+    if (inserted) w.representative.push_back(static_cast<std::uint32_t>(i));
+    if (release_records && i % 3 == 2) {
+      // Records up to the one `ahead` vertices on have been read; release whole steps behind.
+      const unsigned char* done = record(i);
+      if (static_cast<std::size_t>(done - released) >= release_step) {
+        release_pages(released, done);
+        released = done;
+      }
+    }
+  }
+  // A NaN or infinity: name the first one, with its byte offset (throws).
+  if (!finite) check_binary_stl_finite(view, name);
+  if (release_records) release_pages(released, view.records + stl_record_bytes * view.count);
+
+  w.positions.resize(keys.size());
+  for (std::size_t id = 0; id < keys.size(); ++id) {
+    const Key& k = keys[id];
+    w.positions[id] = {std::bit_cast<float>(k[0]), std::bit_cast<float>(k[1]),
+                       std::bit_cast<float>(k[2])};
+  }
+  w.merged = n - keys.size();
+  return w;
+}
+
+}  // namespace pgamesh

@@ -1,0 +1,62 @@
+#include "pgamesh/mesh/welded_triangles.hpp"
+
+#include <stdexcept>
+#include <string>
+
+#include "pgamesh/geometry/bounding_box.hpp"
+#include "pgamesh/geometry/chunked_sums.hpp"
+#include "pgamesh/mesh/weld.hpp"
+
+namespace pgamesh {
+
+bool all_triangles(const Mesh& mesh) {
+  const std::size_t n = mesh.face_count();
+  if (n == 0 || mesh.corners.size() != 3 * n) return false;
+  for (std::size_t f = 0; f < n; ++f)
+    if (mesh.face_offsets[f + 1] - mesh.face_offsets[f] != 3) return false;
+  return true;
+}
+
+WeldedTriangles weld_triangles(const Mesh& mesh, double tolerance) {
+  if (!all_triangles(mesh)) throw std::invalid_argument("weld_triangles: a face is not a triangle");
+  for (std::uint32_t c : mesh.corners)
+    if (c >= mesh.vertices.size())
+      throw std::out_of_range("weld: corner index " + std::to_string(c) + " out of range (" +
+                              std::to_string(mesh.vertices.size()) + " vertices)");
+  WeldMap map = weld_map(mesh.vertices, tolerance);
+  WeldedTriangles w;
+  w.input_vertices = mesh.vertices.size();
+  w.merged = map.merged;
+  w.max_moved = map.max_moved;
+  w.tolerance = map.tolerance;
+  w.positions.resize(map.welded_count());
+  for (std::size_t i = 0; i < w.positions.size(); ++i)
+    w.positions[i] = mesh.vertices[map.representative[i]];
+  w.corners.resize(mesh.corners.size());
+  for (std::size_t c = 0; c < mesh.corners.size(); ++c)
+    w.corners[c] = map.to_welded[mesh.corners[c]];
+  w.representative = std::move(map.representative);
+  return w;
+}
+
+MassProperties mass_properties(const WeldedTriangles& mesh, Vec3d reference,
+                               const MassOptions& options, bool single_precision) {
+  const Vec3d* p = mesh.positions.data();
+  const std::uint32_t* c = mesh.corners.data();
+  // The triangle case of mesh_boundary_sums, on the welded coordinates (equal to the input ones).
+  const BoundarySums sums =
+      chunked_sums(mesh.triangle_count(), options.threads,
+                   [&](BoundarySums& s, std::size_t begin, std::size_t end) {
+                     for (std::size_t t = begin; t < end; ++t)
+                       add_triangle(s, p[c[3 * t]] - reference, p[c[3 * t + 1]] - reference,
+                                    p[c[3 * t + 2]] - reference);
+                   });
+  MassProperties m = mass_properties_from_sums(sums, reference, options);
+  m.faces = m.triangles = mesh.triangle_count();
+  m.vertices = mesh.input_vertices;
+  if (single_precision)
+    if (auto w = float32_precision_warning(bounding_box(mesh.positions))) m.warnings.push_back(*w);
+  return m;
+}
+
+}  // namespace pgamesh

@@ -1,0 +1,314 @@
+// The triangle pass (triangle_topology.hpp) against the polygon pass (analyze_polygon_topology),
+// field by field and bit for bit, on meshes full of defects — random triangles on a 3×3×3 grid
+// (collapsed, duplicated, non-manifold, open, inconsistent), the defect meshes of the other
+// topology tests and the shared real meshes — and the weld of binary STL records against the weld
+// of the read mesh (classes, numbering, representatives, −0, NaN, released pages).
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <string>
+
+#include "pgamesh/mesh/mapped_file.hpp"
+#include "pgamesh/mesh/primitives.hpp"
+#include "pgamesh/mesh/read_mesh.hpp"
+#include "pgamesh/mesh/topology.hpp"
+#include "pgamesh/mesh/triangle_topology.hpp"
+#include "pgamesh/mesh/welded_triangles.hpp"
+#include "support/golden.hpp"
+#include "support/read_helpers.hpp"
+#include "support/stl_bytes.hpp"
+#include "topology_test_meshes.hpp"
+
+namespace pgamesh {
+namespace {
+
+// Bitwise equality of doubles (NaN equal to NaN, −0 different from +0).
+bool same_bits(double a, double b) {
+  return std::memcmp(&a, &b, sizeof a) == 0;
+}
+
+#define EXPECT_SAME(a, b) EXPECT_TRUE(same_bits((a), (b))) << #a << ": " << (a) << " vs " << (b)
+#define EXPECT_SAME_VEC(a, b)  \
+  do {                         \
+    EXPECT_SAME((a).x, (b).x); \
+    EXPECT_SAME((a).y, (b).y); \
+    EXPECT_SAME((a).z, (b).z); \
+  } while (0)
+
+void expect_same_faces(const std::vector<FaceLocation>& a, const std::vector<FaceLocation>& b) {
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    EXPECT_EQ(a[i].face, b[i].face);
+    EXPECT_EQ(a[i].same_as, b[i].same_as);
+    EXPECT_SAME(a[i].area, b[i].area);
+    EXPECT_SAME_VEC(a[i].centroid, b[i].centroid);
+  }
+}
+
+void expect_same_edges(const std::vector<EdgeLocation>& a, const std::vector<EdgeLocation>& b) {
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    EXPECT_EQ(a[i].face, b[i].face);
+    EXPECT_EQ(a[i].vertex0, b[i].vertex0);
+    EXPECT_EQ(a[i].vertex1, b[i].vertex1);
+    EXPECT_EQ(a[i].face_count, b[i].face_count);
+    EXPECT_SAME_VEC(a[i].p0, b[i].p0);
+    EXPECT_SAME_VEC(a[i].p1, b[i].p1);
+  }
+}
+
+// Every field of two reports, doubles bit for bit.
+void expect_same_report(const TopologyReport& a, const TopologyReport& b) {
+  EXPECT_EQ(a.faces, b.faces);
+  EXPECT_EQ(a.triangles, b.triangles);
+  EXPECT_EQ(a.input_vertices, b.input_vertices);
+  EXPECT_EQ(a.vertices, b.vertices);
+  EXPECT_EQ(a.merged_vertices, b.merged_vertices);
+  EXPECT_EQ(a.unreferenced_vertices, b.unreferenced_vertices);
+  EXPECT_SAME(a.weld_tolerance, b.weld_tolerance);
+  EXPECT_SAME(a.weld_max_moved, b.weld_max_moved);
+  EXPECT_EQ(a.edges, b.edges);
+  EXPECT_EQ(a.boundary_edges, b.boundary_edges);
+  EXPECT_EQ(a.nonmanifold_edges, b.nonmanifold_edges);
+  EXPECT_EQ(a.inconsistent_edges, b.inconsistent_edges);
+  EXPECT_EQ(a.closed, b.closed);
+  EXPECT_EQ(a.orientation_consistent, b.orientation_consistent);
+  EXPECT_SAME_VEC(a.reference_point, b.reference_point);
+  EXPECT_SAME(a.area, b.area);
+  EXPECT_SAME(a.volume, b.volume);
+  EXPECT_SAME(a.carrier_sum.e0, b.carrier_sum.e0);
+  EXPECT_SAME_VEC(a.carrier_sum.normal(), b.carrier_sum.normal());
+  EXPECT_SAME_VEC(a.gap_vector, b.gap_vector);
+  EXPECT_SAME(a.gap_area, b.gap_area);
+  EXPECT_SAME(a.volume_min, b.volume_min);
+  EXPECT_SAME(a.volume_max, b.volume_max);
+  EXPECT_SAME(a.loops_area, b.loops_area);
+  ASSERT_EQ(a.boundary_loops.size(), b.boundary_loops.size());
+  for (std::size_t i = 0; i < a.boundary_loops.size(); ++i) {
+    const BoundaryLoop &x = a.boundary_loops[i], &y = b.boundary_loops[i];
+    EXPECT_EQ(x.half_edges, y.half_edges);
+    EXPECT_EQ(x.closed, y.closed);
+    EXPECT_SAME_VEC(x.vector_area, y.vector_area);
+    EXPECT_SAME(x.area, y.area);
+    EXPECT_SAME(x.perimeter, y.perimeter);
+  }
+  EXPECT_EQ(a.zero_area_faces, b.zero_area_faces);
+  EXPECT_EQ(a.collapsed_faces, b.collapsed_faces);
+  EXPECT_EQ(a.small_area_faces, b.small_area_faces);
+  EXPECT_EQ(a.duplicated_faces, b.duplicated_faces);
+  EXPECT_EQ(a.duplicated_area_faces, b.duplicated_area_faces);
+  EXPECT_SAME(a.area_threshold, b.area_threshold);
+  expect_same_faces(a.zero_area_list, b.zero_area_list);
+  expect_same_faces(a.small_area_list, b.small_area_list);
+  expect_same_faces(a.duplicated_list, b.duplicated_list);
+  expect_same_edges(a.boundary_edge_list, b.boundary_edge_list);
+  expect_same_edges(a.nonmanifold_edge_list, b.nonmanifold_edge_list);
+  expect_same_edges(a.inconsistent_edge_list, b.inconsistent_edge_list);
+  EXPECT_EQ(a.components, b.components);
+  EXPECT_EQ(a.closed_components, b.closed_components);
+  EXPECT_EQ(a.negative_components, b.negative_components);
+  ASSERT_EQ(a.component_list.size(), b.component_list.size());
+  for (std::size_t i = 0; i < a.component_list.size(); ++i) {
+    const ComponentSummary &x = a.component_list[i], &y = b.component_list[i];
+    EXPECT_EQ(x.first_face, y.first_face);
+    EXPECT_EQ(x.faces, y.faces);
+    EXPECT_SAME(x.area, y.area);
+    EXPECT_SAME(x.volume, y.volume);
+    EXPECT_EQ(x.boundary_edges, y.boundary_edges);
+    EXPECT_EQ(x.nonmanifold_edges, y.nonmanifold_edges);
+    EXPECT_EQ(x.inconsistent_edges, y.inconsistent_edges);
+    EXPECT_EQ(x.closed, y.closed);
+  }
+  EXPECT_EQ(a.volume_valid, b.volume_valid);
+  EXPECT_EQ(a.notes, b.notes);
+}
+
+// Both passes on one triangle mesh; returns the report for further checks.
+TopologyReport expect_passes_agree(const Mesh& m, const TopologyOptions& options = {}) {
+  const TopologyReport polygon = analyze_polygon_topology(m, options);
+  const TopologyReport triangle = analyze_topology(m, options);
+  expect_same_report(triangle, polygon);
+  return triangle;
+}
+
+// `faces` random triangles on the 3×3×3 grid, some vertices listed twice: every defect at once.
+Mesh grid_soup(std::uint32_t seed, std::size_t faces) {
+  std::mt19937 rng(seed);
+  std::uniform_int_distribution<int> coord(0, 2), pick(0, 26 + 8);
+  Mesh m;
+  for (int i = 0; i < 27; ++i)
+    m.vertices.push_back({double(i % 3), double(i / 3 % 3), double(i / 9) + 0.25 * (i % 2)});
+  for (int i = 0; i < 8; ++i) m.vertices.push_back(m.vertices[static_cast<std::size_t>(3 * i)]);
+  for (std::size_t f = 0; f < faces; ++f)
+    m.add_face({static_cast<std::uint32_t>(pick(rng)), static_cast<std::uint32_t>(pick(rng)),
+                static_cast<std::uint32_t>(pick(rng))});
+  return m;
+}
+
+TEST(TopologyTriangles, RandomGridSoupsAgreeBitForBit) {
+  TopologyOptions small_lists;
+  small_lists.list_cap = 5;
+  for (std::uint32_t seed = 1; seed <= 60; ++seed) {
+    SCOPED_TRACE(seed);
+    const Mesh m = grid_soup(seed, 4 + seed % 40);
+    const TopologyReport r = expect_passes_agree(m);
+    expect_passes_agree(m, small_lists);
+    if (seed == 40) {  // the soup does exercise the defects the passes must agree on
+      EXPECT_GT(r.nonmanifold_edges + r.boundary_edges + r.inconsistent_edges, 0u);
+    }
+  }
+}
+
+TEST(TopologyTriangles, SoupsCoverEveryDefect) {
+  std::size_t collapsed = 0, duplicated = 0, nonmanifold = 0, open_chains = 0, inconsistent = 0;
+  for (std::uint32_t seed = 1; seed <= 60; ++seed) {
+    const TopologyReport r = analyze_topology(grid_soup(seed, 4 + seed % 40));
+    collapsed += r.collapsed_faces;
+    duplicated += r.duplicated_faces;
+    nonmanifold += r.nonmanifold_edges;
+    inconsistent += r.inconsistent_edges;
+    for (const BoundaryLoop& loop : r.boundary_loops) open_chains += loop.closed ? 0 : 1;
+  }
+  EXPECT_GT(collapsed, 0u);
+  EXPECT_GT(duplicated, 0u);
+  EXPECT_GT(nonmanifold, 0u);
+  EXPECT_GT(inconsistent, 0u);
+  EXPECT_GT(open_chains, 0u);
+}
+
+TEST(TopologyTriangles, DefectMeshesAgree) {
+  using namespace test;
+  const Mesh cube = unit_cube();
+  expect_passes_agree(cube);
+  expect_passes_agree(unshared(cube));
+  expect_passes_agree(without_faces(cube, {1, 5}));
+  expect_passes_agree(with_flipped(cube, {0, 7}));
+  expect_passes_agree(merged(cube, translated(cube, {3, 0, 0})));
+  expect_passes_agree(merged(cube, translated(cube, {1, 1, 0})));
+  expect_passes_agree(translated(icosphere(3, 2.0), {1e6, -1e6, 1e6}));
+  Mesh weld_me = unshared(icosphere(2, 1.0));
+  for (std::size_t i = 0; i < weld_me.vertices.size(); i += 3) weld_me.vertices[i].x += 1e-9;
+  TopologyOptions tolerant;
+  tolerant.weld_tolerance = 1e-6;
+  const TopologyReport r = expect_passes_agree(weld_me, tolerant);
+  EXPECT_TRUE(r.closed);
+  EXPECT_GT(r.weld_max_moved, 0.0);
+}
+
+TEST(TopologyTriangles, SharedRealMeshesAgree) {
+  if (test::shared_meshes_dir().empty())
+    GTEST_SKIP() << "../shared/meshes not found (" PGAMESH_SHARED_MESHES_DIR "): skipped";
+  std::size_t compared = 0;
+  for (const char* name : {"npm/bunny.stl", "npm/teapot.obj", "stl-models/gearwheel.bin.stl",
+                           "stl-models/tetrahedronIrregular.bin.stl",
+                           "openscad-testing-data/issue1580-back-to-back.stl"}) {
+    const std::string path = test::shared_meshes_dir() + "/" + name;
+    if (!std::filesystem::exists(path)) continue;
+    SCOPED_TRACE(name);
+    const Mesh m = read_mesh(path);
+    if (!all_triangles(m)) continue;
+    const TopologyReport r = expect_passes_agree(m);
+    // A binary STL welded from its records gives the same report.
+    const MappedFile file = MappedFile::open(path);
+    if (const auto view = binary_stl_view(file.bytes(), path)) {
+      const WeldedTriangles w = weld_binary_stl(*view, path);
+      expect_same_report(analyze_welded_triangles(w, r.reference_point), r);
+    }
+    ++compared;
+  }
+  EXPECT_GE(compared, 3u);
+}
+
+// The weld of STL records against weld_triangles of the read mesh: same everything.
+void expect_same_weld(const WeldedTriangles& a, const WeldedTriangles& b) {
+  EXPECT_EQ(a.corners, b.corners);
+  EXPECT_EQ(a.representative, b.representative);
+  EXPECT_EQ(a.input_vertices, b.input_vertices);
+  EXPECT_EQ(a.merged, b.merged);
+  ASSERT_EQ(a.positions.size(), b.positions.size());
+  for (std::size_t i = 0; i < a.positions.size(); ++i)
+    EXPECT_SAME_VEC(a.positions[i], b.positions[i]);
+}
+
+TEST(TopologyTriangles, StlRecordWeldMatchesTheReadMesh) {
+  Mesh m = test::merged(icosphere(3, 1.5), test::without_faces(test::unit_cube(), {2}));
+  m.vertices[0] = {-0.0, 0.0, -0.0};  // a signed zero as the representative
+  m.vertices[5] = {0.0, -0.0, 0.0};   // welds with it
+  const std::vector<char> bytes = test::binary_stl_bytes(m);
+  const auto view = binary_stl_view(bytes, "soup.stl");
+  ASSERT_TRUE(view.has_value());
+  MeshSource source;
+  const Mesh read = read_mesh_bytes(bytes, "soup.stl", &source);
+  const WeldedTriangles from_records = weld_binary_stl(*view, "soup.stl");
+  expect_same_weld(from_records, weld_triangles(read));
+  EXPECT_EQ(from_records.input_vertices, 3 * read.face_count());
+  EXPECT_LT(from_records.positions.size(), read.vertices.size() / 4);
+
+  const Vec3d ref = bounding_box(from_records.positions).centre();
+  expect_same_report(analyze_welded_triangles(from_records, ref), analyze_topology(read));
+  const MassProperties a = mass_properties(from_records, ref, {}, true);
+  const MassProperties b = mass_properties(read, {}, &source);
+  EXPECT_SAME(a.volume, b.volume);
+  EXPECT_SAME(a.area, b.area);
+  EXPECT_SAME_VEC(a.center_of_mass, b.center_of_mass);
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) EXPECT_SAME(a.inertia_com[i][j], b.inertia_com[i][j]);
+  EXPECT_EQ(a.faces, b.faces);
+  EXPECT_EQ(a.vertices, b.vertices);
+  EXPECT_EQ(a.warnings, b.warnings);
+}
+
+TEST(TopologyTriangles, StlNonFiniteCoordinateIsNamedLikeTheReader) {
+  std::vector<std::array<float, 9>> tris = {{0, 0, 0, 1, 0, 0, 0, 1, 0},
+                                            {0, 0, 0, 1, 0, 0, 0, 0, NAN}};
+  const std::string bytes = test::binary_stl(tris, 2);
+  const auto view = binary_stl_view(bytes, "nan.stl");
+  ASSERT_TRUE(view.has_value());
+  try {
+    weld_binary_stl(*view, "nan.stl");
+    FAIL() << "no error for a NaN coordinate";
+  } catch (const InputError& e) {
+    EXPECT_BYTE_ERROR(e, 84u + 50u + 12u + 24u + 8u, "non-finite");
+  }
+}
+
+TEST(TopologyTriangles, StlWeldReleasingMappedPagesGivesTheSameResult) {
+  // 327 680 triangles = 16 MB of records: several release steps.
+  const Mesh m = icosphere(7, 1.0);
+  const std::vector<char> bytes = test::binary_stl_bytes(m);
+  const std::string path = (std::filesystem::temp_directory_path() /
+                            ("pgamesh_release_" + std::to_string(::getpid()) + ".stl"))
+                               .string();
+  {
+    std::ofstream out(path, std::ios::binary);
+    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  }
+  const auto memory = binary_stl_view(bytes, path);
+  ASSERT_TRUE(memory.has_value());
+  const WeldedTriangles kept = weld_binary_stl(*memory, path);
+  {
+    const MappedFile file = MappedFile::open(path);
+    const auto view = binary_stl_view(file.bytes(), path);
+    ASSERT_TRUE(view.has_value());
+    const WeldedTriangles released = weld_binary_stl(*view, path, true);
+    expect_same_weld(released, kept);
+    // The released pages come back from the file when read again.
+    EXPECT_TRUE(std::equal(bytes.begin(), bytes.end(), file.bytes().begin()));
+  }
+  std::filesystem::remove(path);
+  const TopologyReport r = analyze_welded_triangles(kept, bounding_box(kept.positions).centre());
+  EXPECT_TRUE(r.closed);
+  EXPECT_EQ(r.vertices, m.vertices.size());
+  EXPECT_EQ(r.edges, 3 * m.face_count() / 2);
+  EXPECT_EQ(r.components, 1u);
+}
+
+}  // namespace
+}  // namespace pgamesh
