@@ -1,14 +1,19 @@
-// Topology speed: the exact weld of an STL-like vertex soup (three fresh vertices per triangle)
-// and the whole analyze_topology pass (weld, edges, components, loops, defects, sums), on
-// icospheres of 81 920 to 5 242 880 triangles. Not a test: nothing here asserts a time.
+// Topology speed: the exact weld of an STL-like vertex soup (three fresh vertices per triangle),
+// the weld of binary STL records, the triangle pass on welded triangles and the whole
+// analyze_topology pass (weld, edges, components, loops, defects, sums), on icospheres of 81 920 to
+// 5 242 880 triangles. Not a test: nothing here asserts a time.
 //   build/release/bench/bench_topology --benchmark_min_time=1
 #include <benchmark/benchmark.h>
 
+#include <cstring>
 #include <vector>
 
+#include "pgamesh/geometry/bounding_box.hpp"
 #include "pgamesh/mesh/primitives.hpp"
 #include "pgamesh/mesh/topology.hpp"
+#include "pgamesh/mesh/triangle_topology.hpp"
 #include "pgamesh/mesh/weld.hpp"
+#include "pgamesh/mesh/welded_triangles.hpp"
 
 using namespace pgamesh;
 
@@ -31,29 +36,99 @@ const Mesh& soup(int level) {
   return cache[level];
 }
 
+// The same soup as binary STL bytes (float32 records, little-endian hosts).
+const std::vector<char>& stl_bytes(int level) {
+  static std::vector<std::vector<char>> cache(11);
+  std::vector<char>& out = cache[level];
+  if (out.empty()) {
+    const Mesh& m = soup(level);
+    const std::size_t n = m.face_count();
+    out.assign(stl_header_bytes + stl_record_bytes * n, 0);
+    const auto count = static_cast<std::uint32_t>(n);
+    std::memcpy(out.data() + 80, &count, 4);
+    for (std::size_t t = 0; t < n; ++t)
+      for (int k = 0; k < 3; ++k)
+        for (int j = 0; j < 3; ++j) {
+          const auto f = static_cast<float>(m.vertices[3 * t + k][j]);
+          std::memcpy(out.data() + stl_header_bytes + stl_record_bytes * t + 12 + 12 * k + 4 * j,
+                      &f, 4);
+        }
+  }
+  return out;
+}
+
+void set_counters(benchmark::State& state, double triangles) {
+  state.counters["triangles"] = triangles;
+  state.counters["triangles/s"] =
+      benchmark::Counter(triangles, benchmark::Counter::kIsIterationInvariantRate);
+}
+
 void BM_WeldExact(benchmark::State& state) {
   const Mesh& m = soup(static_cast<int>(state.range(0)));
   for (auto _ : state) {
     WeldMap w = weld_map(m.vertices);
     benchmark::DoNotOptimize(w.representative.data());
   }
-  state.counters["corners"] = static_cast<double>(m.vertices.size());
-  state.counters["corners/s"] = benchmark::Counter(static_cast<double>(m.vertices.size()),
-                                                   benchmark::Counter::kIsIterationInvariantRate);
+  set_counters(state, static_cast<double>(m.face_count()));
 }
-BENCHMARK(BM_WeldExact)->Arg(6)->Arg(8)->Arg(9)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_WeldExact)->Arg(6)->Arg(8)->Arg(9)->Unit(benchmark::kMillisecond)->UseRealTime();
 
+// weld_binary_stl on bytes in memory (two threads above 65 536 records).
+void BM_WeldBinaryStl(benchmark::State& state) {
+  const std::vector<char>& bytes = stl_bytes(static_cast<int>(state.range(0)));
+  const BinaryStlView view = *binary_stl_view(bytes, "soup.stl");
+  for (auto _ : state) {
+    WeldedTriangles w = weld_binary_stl(view, "soup.stl");
+    benchmark::DoNotOptimize(w.corners.data());
+  }
+  set_counters(state, static_cast<double>(view.count));
+}
+BENCHMARK(BM_WeldBinaryStl)->Arg(6)->Arg(8)->Arg(9)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The triangle pass alone on welded triangles (edge pass and face tally on two threads).
+void BM_AnalyzeWeldedTriangles(benchmark::State& state) {
+  const std::vector<char>& bytes = stl_bytes(static_cast<int>(state.range(0)));
+  const WeldedTriangles w = weld_binary_stl(*binary_stl_view(bytes, "soup.stl"), "soup.stl");
+  const Vec3d ref = bounding_box(w.positions).centre();
+  for (auto _ : state) {
+    TopologyReport r = analyze_welded_triangles(w, ref);
+    benchmark::DoNotOptimize(r.edges);
+  }
+  set_counters(state, static_cast<double>(w.triangle_count()));
+}
+BENCHMARK(BM_AnalyzeWeldedTriangles)
+    ->Arg(6)
+    ->Arg(8)
+    ->Arg(9)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+// analyze_topology on a Mesh soup: weld_map, then the triangle pass.
 void BM_AnalyzeTopology(benchmark::State& state) {
   const Mesh& m = soup(static_cast<int>(state.range(0)));
   for (auto _ : state) {
     TopologyReport r = analyze_topology(m);
     benchmark::DoNotOptimize(r.edges);
   }
-  state.counters["triangles"] = static_cast<double>(m.face_count());
-  state.counters["triangles/s"] = benchmark::Counter(static_cast<double>(m.face_count()),
-                                                     benchmark::Counter::kIsIterationInvariantRate);
+  set_counters(state, static_cast<double>(m.face_count()));
 }
-BENCHMARK(BM_AnalyzeTopology)->Arg(6)->Arg(8)->Arg(9)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_AnalyzeTopology)->Arg(6)->Arg(8)->Arg(9)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The polygon pass on the same soup, for comparison.
+void BM_AnalyzePolygonTopology(benchmark::State& state) {
+  const Mesh& m = soup(static_cast<int>(state.range(0)));
+  for (auto _ : state) {
+    TopologyReport r = analyze_polygon_topology(m);
+    benchmark::DoNotOptimize(r.edges);
+  }
+  set_counters(state, static_cast<double>(m.face_count()));
+}
+BENCHMARK(BM_AnalyzePolygonTopology)
+    ->Arg(6)
+    ->Arg(8)
+    ->Arg(9)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 }  // namespace
 

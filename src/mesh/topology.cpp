@@ -73,7 +73,6 @@ TopologyReport analyze_polygon_topology(const Mesh& mesh, const TopologyOptions&
   const FaceComponents comps = face_components(mesh, edges);
   r.edges = edges.edge_count();
   tally.components.resize(comps.count());
-  tally.volume6.assign(comps.count(), 0.0);
   for (std::size_t k = 0; k < comps.count(); ++k) {
     tally.components[k].first_face = comps.first_face[k];
     tally.components[k].faces = comps.face_count[k];
@@ -84,8 +83,8 @@ TopologyReport analyze_polygon_topology(const Mesh& mesh, const TopologyOptions&
   for (std::uint32_t f : edges.collapsed_faces) collapsed[f] = 1;
   r.collapsed_faces = edges.collapsed_faces.size();
   for (std::size_t f = 0; f < face_count; ++f)
-    detail::tally_face(tally, static_cast<std::uint32_t>(f), collapsed[f] != 0,
-                       comps.face_component[f]);
+    detail::tally_face(tally, static_cast<std::uint32_t>(f), collapsed[f] != 0);
+  detail::tally_component_sums(tally, comps.face_component);
 
   // Edges: boundary, non-manifold, inconsistently oriented.
   for (std::size_t e = 0; e < edges.edge_count(); ++e) {

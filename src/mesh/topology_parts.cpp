@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "pgamesh/geometry/carrier.hpp"
 #include "pgamesh/geometry/gap.hpp"
 #include "pgamesh/geometry/polygon_face.hpp"
 
@@ -73,6 +74,35 @@ Vec3d own_normal(const WeldedFaces& mesh, std::uint32_t f) {
   });
 }
 
+// The surface parts of polygon_face_sums — area2, carrier_sum, volume6, all the report uses —
+// from the same fan carriers with the same additions, without the first and second moments.
+BoundarySums face_surface_sums(const WeldedFaces& mesh, std::uint32_t f, Vec3d ref) {
+  BoundarySums p;
+  const std::uint32_t begin = mesh.begin(f), k = mesh.size(f);
+  if (k < 3) return p;
+  const Vec3d a = mesh.corner_position(begin) - ref;
+  Vec3d b = mesh.corner_position(begin + 1) - ref;
+  for (std::uint32_t i = 2; i < k; ++i) {
+    const Vec3d c = mesh.corner_position(begin + i) - ref;
+    const pga3::Plane<double> carrier = triangle_carrier(a, b, c);
+    p.volume6 += origin_join(carrier);  // as add_tetrahedron
+    add_face_carrier(p, carrier);
+    b = c;
+  }
+  if (k > 3) p.area2 = pga3::norm(p.carrier_sum);
+  return p;
+}
+
+// total += s for the surface parts (BoundarySums::operator+= field by field).
+void add_surface(BoundarySums& total, const BoundarySums& s) {
+  total.area2 += s.area2;
+  total.carrier_sum.e0 += s.carrier_sum.e0;
+  total.carrier_sum.e1 += s.carrier_sum.e1;
+  total.carrier_sum.e2 += s.carrier_sum.e2;
+  total.carrier_sum.e3 += s.carrier_sum.e3;
+  total.volume6 += s.volume6;
+}
+
 }  // namespace
 
 void check_topology_options(const TopologyOptions& options) {
@@ -80,20 +110,12 @@ void check_topology_options(const TopologyOptions& options) {
     throw std::invalid_argument("area threshold must be a finite number >= 0");
 }
 
-void tally_face(TopologyTally& t, std::uint32_t f, bool collapsed, std::uint32_t component) {
+void tally_face(TopologyTally& t, std::uint32_t f, bool collapsed) {
   TopologyReport& r = t.r;
   const WeldedFaces& mesh = t.mesh;
   const std::uint32_t begin = mesh.begin(f), k = mesh.size(f);
-  const Vec3d ref = r.reference_point;
   if (k >= 3) r.triangles += k - 2;
-  const BoundarySums s = polygon_face_sums(k, [&](std::size_t i) {
-    return mesh.corner_position(begin + static_cast<std::uint32_t>(i)) - ref;
-  });
-  t.total += s;
-  if (component != no_edge) {
-    t.components[component].area += s.area2 / 2;
-    t.volume6[component] += s.volume6;
-  }
+  add_surface(t.total, face_surface_sums(mesh, f, r.reference_point));
   // Degenerate faces are judged on the normal about the face's own first corner (digits).
   const Vec3d n = own_normal(mesh, f);
   const bool zero = collapsed || (n.x == 0 && n.y == 0 && n.z == 0);
@@ -116,6 +138,25 @@ void tally_face(TopologyTally& t, std::uint32_t f, bool collapsed, std::uint32_t
     if (r.zero_area_faces++ < t.cap) r.zero_area_list.push_back(loc);
   } else {
     if (r.small_area_faces++ < t.cap) r.small_area_list.push_back(loc);
+  }
+}
+
+void tally_component_sums(TopologyTally& t, std::span<const std::uint32_t> face_component) {
+  const std::size_t n = t.components.size();
+  t.area2.assign(n, 0.0);
+  t.volume6.assign(n, 0.0);
+  if (n == 1 && t.components[0].faces == t.r.faces) {
+    t.area2[0] = t.total.area2;
+    t.volume6[0] = t.total.volume6;
+    return;
+  }
+  for (std::size_t f = 0; f < face_component.size(); ++f) {
+    const std::uint32_t k = face_component[f];
+    if (k == no_edge) continue;
+    const BoundarySums s =
+        face_surface_sums(t.mesh, static_cast<std::uint32_t>(f), t.r.reference_point);
+    t.area2[k] += s.area2;
+    t.volume6[k] += s.volume6;
   }
 }
 
@@ -190,6 +231,7 @@ void finish_report(TopologyTally& t,
   r.components = t.components.size();
   for (std::size_t k = 0; k < t.components.size(); ++k) {
     ComponentSummary& s = t.components[k];
+    s.area = t.area2[k] / 2;
     s.volume = t.volume6[k] / 6;
     s.closed = s.boundary_edges == 0 && s.nonmanifold_edges == 0 && s.inconsistent_edges == 0;
     if (s.closed) ++r.closed_components;
@@ -206,11 +248,7 @@ void finish_report(TopologyTally& t,
     FaceLocation loc;
     loc.face = duplicates[i].first;
     loc.same_as = duplicates[i].second;
-    const std::uint32_t begin = t.mesh.begin(loc.face), k = t.mesh.size(loc.face);
-    const BoundarySums s = polygon_face_sums(k, [&](std::size_t j) {
-      return t.mesh.corner_position(begin + static_cast<std::uint32_t>(j)) - ref;
-    });
-    loc.area = s.area2 / 2;
+    loc.area = face_surface_sums(t.mesh, loc.face, ref).area2 / 2;
     loc.centroid = face_centroid(t.mesh, loc.face);
     r.duplicated_list.push_back(loc);
   }

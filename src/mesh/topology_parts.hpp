@@ -41,16 +41,22 @@ struct TopologyTally {
   std::size_t cap;
   double area_threshold;
   std::vector<ComponentSummary> components;  // first_face and faces filled by the caller
-  std::vector<double> volume6;               // per component, Σ o ∨ F
-  BoundarySums total;
+  std::vector<double> area2, volume6;        // per component, Σ ‖F‖ and Σ o ∨ F
+  BoundarySums total;                        // only the surface parts: area2, carrier_sum, volume6
 };
 
 // Throws std::invalid_argument for a bad option.
 void check_topology_options(const TopologyOptions& options);
 
-// Face f (component `component`, or no_edge): its sums about r.reference_point, its triangle count
-// and whether it has zero or small area. Call in face order.
-void tally_face(TopologyTally& t, std::uint32_t f, bool collapsed, std::uint32_t component);
+// Face f: its sums about r.reference_point into the total, its triangle count and whether it has
+// zero or small area. Call in face order. Touches neither `components` nor `area2`/`volume6`, so it
+// may run while another thread finds the components.
+void tally_face(TopologyTally& t, std::uint32_t f, bool collapsed);
+
+// The per-component sums, once every face has been tallied: face_component[f] is f's component
+// or no_edge. When one component holds every face its sums are the total's (the same additions in
+// the same order); otherwise a second pass over the faces.
+void tally_component_sums(TopologyTally& t, std::span<const std::uint32_t> face_component);
 
 // The edge {v0 < v1} with `uses` half-edges, `forward` of them running v0 → v1, lowest face
 // `face` in `component`: boundary, inconsistent, non-manifold. Call in edge order ((v0, v1)

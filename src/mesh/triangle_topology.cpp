@@ -1,6 +1,8 @@
 #include "pgamesh/mesh/triangle_topology.hpp"
 
 #include <algorithm>
+#include <exception>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -27,57 +29,57 @@ struct OddEdge {
   std::uint32_t v0, v1, face, uses, forward;
 };
 
-}  // namespace
+// What the edge pass finds.
+struct EdgePass {
+  std::size_t edges = 0, collapsed_faces = 0, unreferenced_vertices = 0;
+  std::vector<std::uint32_t> component;  // face → component (numbered by lowest face) or no_edge
+  std::vector<ComponentSummary> components;                         // first_face and faces
+  std::vector<OddEdge> odd;                                         // in edge order
+  std::vector<std::uint32_t> sides;                                 // boundary half-edges
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> duplicates;  // (face, earlier face)
+};
 
-TopologyReport analyze_welded_triangles(const WeldedTriangles& mesh, Vec3d reference,
-                                        const TopologyOptions& options) {
-  detail::check_topology_options(options);
-  TopologyReport r;
+// A triangle is collapsed when two of its corners weld to one vertex (edges.hpp).
+inline bool collapsed(const std::uint32_t* corner, std::size_t f) {
+  const std::uint32_t a = corner[3 * f], b = corner[3 * f + 1], c = corner[3 * f + 2];
+  return a == b || b == c || c == a;
+}
+
+// Half-edge h = 3 f + k runs from corner h to corner 3 f + (k + 1) % 3.
+inline std::uint32_t head(const std::uint32_t* corner, std::uint32_t h) {
+  return corner[h % 3 == 2 ? h - 2 : h + 1];
+}
+
+// Welded vertices that no corner names.
+std::size_t unreferenced_vertices(const WeldedTriangles& mesh) {
+  std::vector<bool> referenced(mesh.positions.size());
+  for (std::uint32_t v : mesh.corners) referenced[v] = true;
+  return static_cast<std::size_t>(std::count(referenced.begin(), referenced.end(), false));
+}
+
+EdgePass edge_pass(const WeldedTriangles& mesh) {
+  EdgePass out;
   const std::size_t face_count = mesh.triangle_count();
   const std::size_t vertex_count = mesh.positions.size();
   const std::uint32_t* corner = mesh.corners.data();
-  r.faces = face_count;
-  r.input_vertices = mesh.input_vertices;
-  r.vertices = vertex_count;
-  r.merged_vertices = mesh.merged;
-  r.weld_tolerance = mesh.tolerance;
-  r.weld_max_moved = mesh.max_moved;
-  r.area_threshold = options.area_threshold;
-  r.reference_point = reference;
-  const detail::WeldedFaces faces{mesh.positions, mesh.representative, mesh.corners, {}};
-  detail::TopologyTally tally(r, faces, options);
-
-  // A triangle is collapsed when two of its corners weld to one vertex (edges.hpp).
-  auto collapsed = [&](std::size_t f) {
-    const std::uint32_t a = corner[3 * f], b = corner[3 * f + 1], c = corner[3 * f + 2];
-    return a == b || b == c || c == a;
-  };
-  // Half-edge h = 3 f + k runs from corner h to corner 3 f + (k + 1) % 3.
-  auto head = [&](std::uint32_t h) { return corner[h % 3 == 2 ? h - 2 : h + 1]; };
-
   // Counting sort of the half-edges of non-collapsed triangles by their lower end; `start` first
   // counts, then (after the fill, shifted back) holds each vertex's bucket start.
   std::vector<std::uint32_t> start(vertex_count + 1, 0);
-  {
-    std::vector<std::uint8_t> referenced(vertex_count, 0);
-    for (std::size_t f = 0; f < face_count; ++f) {
-      for (int k = 0; k < 3; ++k) referenced[corner[3 * f + k]] = 1;
-      if (collapsed(f)) {
-        ++r.collapsed_faces;
-        continue;
-      }
-      for (std::uint32_t h = static_cast<std::uint32_t>(3 * f); h < 3 * f + 3; ++h)
-        ++start[std::min(corner[h], head(h)) + 1];
+  out.unreferenced_vertices = unreferenced_vertices(mesh);
+  for (std::size_t f = 0; f < face_count; ++f) {
+    if (collapsed(corner, f)) {
+      ++out.collapsed_faces;
+      continue;
     }
-    r.unreferenced_vertices =
-        static_cast<std::size_t>(std::count(referenced.begin(), referenced.end(), std::uint8_t{0}));
+    for (std::uint32_t h = static_cast<std::uint32_t>(3 * f); h < 3 * f + 3; ++h)
+      ++start[std::min(corner[h], head(corner, h)) + 1];
   }
   for (std::size_t v = 0; v < vertex_count; ++v) start[v + 1] += start[v];
   std::vector<std::uint32_t> bucket(start[vertex_count]);
   for (std::size_t f = 0; f < face_count; ++f) {
-    if (collapsed(f)) continue;
+    if (collapsed(corner, f)) continue;
     for (std::uint32_t h = static_cast<std::uint32_t>(3 * f); h < 3 * f + 3; ++h)
-      bucket[start[std::min(corner[h], head(h))]++] = h;  // ascending within a bucket
+      bucket[start[std::min(corner[h], head(corner, h))]++] = h;  // ascending within a bucket
   }
   for (std::size_t v = vertex_count; v > 0; --v) start[v] = start[v - 1];
   start[0] = 0;
@@ -85,16 +87,13 @@ TopologyReport analyze_welded_triangles(const WeldedTriangles& mesh, Vec3d refer
   // Each vertex's bucket grouped by upper end: one group per edge, edges in (v0, v1) order.
   std::vector<std::uint32_t> parent(face_count);
   for (std::size_t f = 0; f < face_count; ++f) parent[f] = static_cast<std::uint32_t>(f);
-  std::vector<OddEdge> odd;
-  std::vector<std::uint32_t> sides;                                 // boundary half-edges
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> duplicates;  // (face, earlier face)
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> group;       // (upper end, half-edge)
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> group;  // (upper end, half-edge)
   std::size_t edge_count = 0;
   for (std::uint32_t v = 0; v < vertex_count; ++v) {
     group.clear();
     for (std::uint32_t i = start[v]; i < start[v + 1]; ++i) {
       const std::uint32_t h = bucket[i];
-      group.emplace_back(std::max(corner[h], head(h)), h);
+      group.emplace_back(std::max(corner[h], head(corner, h)), h);
     }
     if (group.size() <= 16) {
       for (std::size_t i = 1; i < group.size(); ++i)  // insertion sort: stable, tiny input
@@ -127,19 +126,19 @@ TopologyReport analyze_welded_triangles(const WeldedTriangles& mesh, Vec3d refer
           for (std::size_t m = i; m < j; ++m) {
             const std::uint32_t o = group[m].second;
             if (corner[3 * (o / 3) + (o % 3 + 2) % 3] == third) {
-              duplicates.emplace_back(h / 3, o / 3);
+              out.duplicates.emplace_back(h / 3, o / 3);
               break;
             }
           }
         }
       }
       const auto uses = static_cast<std::uint32_t>(end - i);
-      if (uses == 1) sides.push_back(group[i].second);
-      if (uses != 2 || forward != 1) odd.push_back({v, upper, first_face, uses, forward});
+      if (uses == 1) out.sides.push_back(group[i].second);
+      if (uses != 2 || forward != 1) out.odd.push_back({v, upper, first_face, uses, forward});
       i = end;
     }
   }
-  r.edges = edge_count;
+  out.edges = edge_count;
   bucket = {};
   start = {};
 
@@ -147,36 +146,95 @@ TopologyReport analyze_welded_triangles(const WeldedTriangles& mesh, Vec3d refer
   // equal at a root) and stays within its set, so one ascending pass overwrites the parent array
   // with the numbers: parent[f] < f has already been given its component's number.
   std::vector<std::uint32_t>& component = parent;
+  auto& components = out.components;
   for (std::size_t f = 0; f < face_count; ++f) {
-    if (collapsed(f)) {
+    if (collapsed(corner, f)) {
       component[f] = no_edge;  // no edges, no component; nothing points at it
       continue;
     }
     const std::uint32_t p = parent[f];
     if (p == f) {
-      component[f] = static_cast<std::uint32_t>(tally.components.size());
-      tally.components.push_back({});
-      tally.components.back().first_face = static_cast<std::uint32_t>(f);
+      component[f] = static_cast<std::uint32_t>(components.size());
+      components.push_back({});
+      components.back().first_face = static_cast<std::uint32_t>(f);
     } else {
       component[f] = component[p];
     }
-    ++tally.components[component[f]].faces;
+    ++components[component[f]].faces;
   }
-  tally.volume6.assign(tally.components.size(), 0.0);
+  out.component = std::move(parent);
+  return out;
+}
 
-  for (std::size_t f = 0; f < face_count; ++f)
-    detail::tally_face(tally, static_cast<std::uint32_t>(f), collapsed(f), component[f]);
-  for (const OddEdge& e : odd)
-    detail::tally_edge(tally, e.v0, e.v1, e.face, e.uses, e.forward, component[e.face]);
+// Triangles per thread below which the face tally is not worth a thread of its own.
+constexpr std::size_t faces_per_thread = std::size_t{1} << 14;
 
-  std::sort(duplicates.begin(), duplicates.end());
+}  // namespace
+
+TopologyReport analyze_welded_triangles(const WeldedTriangles& mesh, Vec3d reference,
+                                        const TopologyOptions& options) {
+  detail::check_topology_options(options);
+  TopologyReport r;
+  const std::size_t face_count = mesh.triangle_count();
+  const std::uint32_t* corner = mesh.corners.data();
+  r.faces = face_count;
+  r.input_vertices = mesh.input_vertices;
+  r.vertices = mesh.positions.size();
+  r.merged_vertices = mesh.merged;
+  r.weld_tolerance = mesh.tolerance;
+  r.weld_max_moved = mesh.max_moved;
+  r.area_threshold = options.area_threshold;
+  r.reference_point = reference;
+  const detail::WeldedFaces faces{mesh.positions, mesh.representative, mesh.corners, {}};
+  detail::TopologyTally tally(r, faces, options);
+
+  // The faces' sums and degenerate faces need no edges: a second thread tallies them while this
+  // one runs the edge pass. Each pass writes only its own data, so the result is the same as in
+  // one thread.
+  auto face_tally = [&] {
+    for (std::size_t f = 0; f < face_count; ++f)
+      detail::tally_face(tally, static_cast<std::uint32_t>(f), collapsed(corner, f));
+  };
+  EdgePass edges;
+  if (face_count < faces_per_thread) {
+    face_tally();
+    edges = edge_pass(mesh);
+  } else {
+    std::exception_ptr face_error;
+    std::thread face_thread([&] {
+      try {
+        face_tally();
+      } catch (...) {
+        face_error = std::current_exception();
+      }
+    });
+    try {
+      edges = edge_pass(mesh);
+    } catch (...) {
+      face_thread.join();
+      throw;
+    }
+    face_thread.join();
+    if (face_error) std::rethrow_exception(face_error);
+  }
+
+  r.edges = edges.edges;
+  r.collapsed_faces = edges.collapsed_faces;
+  r.unreferenced_vertices = edges.unreferenced_vertices;
+  tally.components = std::move(edges.components);
+  detail::tally_component_sums(tally, edges.component);
+  for (const OddEdge& e : edges.odd)
+    detail::tally_edge(tally, e.v0, e.v1, e.face, e.uses, e.forward, edges.component[e.face]);
+
+  std::vector<std::uint32_t>& sides = edges.sides;
+  std::sort(edges.duplicates.begin(), edges.duplicates.end());
   std::sort(sides.begin(), sides.end());
   std::vector<std::uint32_t> tails(sides.size()), heads(sides.size());
   for (std::size_t i = 0; i < sides.size(); ++i) {
     tails[i] = corner[sides[i]];
-    heads[i] = head(sides[i]);
+    heads[i] = head(corner, sides[i]);
   }
-  detail::finish_report(tally, duplicates,
+  detail::finish_report(tally, edges.duplicates,
                         trace_boundary_loops(sides, tails, heads, mesh.positions, reference));
   return r;
 }

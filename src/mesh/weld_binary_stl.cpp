@@ -8,6 +8,8 @@
 #include <array>
 #include <bit>
 #include <cstring>
+#include <exception>
+#include <thread>
 
 #include "pgamesh/input_error.hpp"
 #include "pgamesh/mesh/welded_triangles.hpp"
@@ -73,6 +75,21 @@ class KeyTable {
 
   const std::uint64_t* slot_address(std::uint64_t h) const { return &slots_[h & mask_]; }
 
+  // The id of `k` (hash h) among `keys`, or none.
+  std::uint32_t find(const Key& k, std::uint64_t h, const std::vector<Key>& keys) const {
+    const std::uint64_t tag = h >> 32;
+    for (std::size_t pos = h & mask_;; pos = (pos + 1) & mask_) {
+      const std::uint64_t s = slots_[pos];
+      if (s == 0) return none;
+      if ((s >> 32) == tag) {
+        const auto id = static_cast<std::uint32_t>((s & 0xffffffffULL) - 1);
+        if (folded(keys[id]) == folded(k)) return id;
+      }
+    }
+  }
+
+  static constexpr std::uint32_t none = 0xffffffffu;
+
   // The id of `k` (hash h), appending it to `keys` when it is new. Keys keep their own bits (the
   // representative's coordinates, −0 included) and compare folded.
   std::uint32_t find_or_insert(const Key& k, std::uint64_t h, std::vector<Key>& keys,
@@ -123,6 +140,60 @@ void release_pages(const unsigned char* from, const unsigned char* to) {
   if (end > begin) madvise(reinterpret_cast<void*>(begin), end - begin, MADV_DONTNEED);
 }
 
+// The weld of input vertices [first, last) into their own table: corners[i − first] gets the id
+// among this range's classes (numbered by first occurrence), first_vertex[id] the input index of
+// its first occurrence.
+struct RangeWeld {
+  KeyTable table{0};
+  std::vector<Key> keys;
+  std::vector<std::uint32_t> first_vertex;
+  bool finite = true;
+};
+
+void weld_range(const BinaryStlView& view, std::size_t first, std::size_t last,
+                std::uint32_t* corners, bool release_records, RangeWeld& out) {
+  const std::size_t n = last - first;
+  // A closed STL shares each vertex among about six corners: start for n / 4 classes and grow.
+  out.table = KeyTable(n / 4 + 16);
+  out.keys.reserve(n / 4 + 16);
+  out.first_vertex.reserve(n / 4 + 16);
+
+  // The table is larger than the caches: hash a few vertices ahead and prefetch their slots.
+  constexpr std::size_t ahead = 16;
+  std::array<std::uint64_t, 32> ring{};
+  std::array<Key, 32> ring_key{};
+  auto record = [&](std::size_t i) { return view.records + stl_record_bytes * (i / 3); };
+  auto load = [&](std::size_t i) {
+    out.finite &= vertex_key(record(i), static_cast<int>(i % 3), ring_key[i & 31]);
+    ring[i & 31] = hash_of(ring_key[i & 31]);
+  };
+  for (std::size_t i = first; i < std::min(first + ahead, last); ++i) load(i);
+  constexpr std::size_t release_step = std::size_t{1} << 22;  // bytes of records per madvise
+  const unsigned char* released = record(first);
+  for (std::size_t i = first; i < last; ++i) {
+    if (i + ahead < last) {
+      load(i + ahead);
+      __builtin_prefetch(out.table.slot_address(ring[(i + ahead) & 31]));
+    }
+    bool inserted = false;
+    corners[i - first] =
+        out.table.find_or_insert(ring_key[i & 31], ring[i & 31], out.keys, inserted);
+    if (inserted) out.first_vertex.push_back(static_cast<std::uint32_t>(i));
+    if (release_records && i % 3 == 2) {
+      // Records up to the one `ahead` vertices on have been read; release whole steps behind.
+      const unsigned char* done = record(i);
+      if (static_cast<std::size_t>(done - released) >= release_step) {
+        release_pages(released, done);
+        released = done;
+      }
+    }
+  }
+  if (release_records) release_pages(released, record(last - 1) + stl_record_bytes);
+}
+
+// Records below which a second thread does not pay for the merge.
+constexpr std::uint64_t records_per_thread = std::uint64_t{1} << 15;
+
 }  // namespace
 
 WeldedTriangles weld_binary_stl(const BinaryStlView& view, const std::string& name,
@@ -134,55 +205,61 @@ WeldedTriangles weld_binary_stl(const BinaryStlView& view, const std::string& na
   WeldedTriangles w;
   w.input_vertices = n;
   w.corners.resize(n);
-  // A closed STL shares each vertex among about six corners: start for n / 4 classes and grow.
-  KeyTable table(n / 4 + 16);
-  std::vector<Key> keys;
-  keys.reserve(n / 4 + 16);
-  w.representative.reserve(n / 4 + 16);
+  if (n == 0) return w;
 
-  // The table is larger than the caches: hash a few vertices ahead and prefetch their slots.
-  constexpr std::size_t ahead = 16;
-  std::array<std::uint64_t, 32> ring{};
-  std::array<Key, 32> ring_key{};
-  bool finite = true;
-  auto record = [&](std::size_t i) { return view.records + stl_record_bytes * (i / 3); };
-  for (std::size_t i = 0; i < std::min(ahead, n); ++i) {
-    finite &= vertex_key(record(i), static_cast<int>(i % 3), ring_key[i & 31]);
-    ring[i & 31] = hash_of(ring_key[i & 31]);
-  }
-  constexpr std::size_t release_step = std::size_t{1} << 22;  // bytes of records per madvise
-  const unsigned char* released = view.records;
-  for (std::size_t i = 0; i < n; ++i) {
-    if (i + ahead < n) {
-      const std::size_t j = i + ahead;
-      finite &= vertex_key(record(j), static_cast<int>(j % 3), ring_key[j & 31]);
-      ring[j & 31] = hash_of(ring_key[j & 31]);
-      __builtin_prefetch(table.slot_address(ring[j & 31]));
-    }
-    bool inserted = false;
-    const std::uint32_t id = table.find_or_insert(ring_key[i & 31], ring[i & 31], keys, inserted);
-    w.corners[i] = id;
-    if (inserted) w.representative.push_back(static_cast<std::uint32_t>(i));
-    if (release_records && i % 3 == 2) {
-      // Records up to the one `ahead` vertices on have been read; release whole steps behind.
-      const unsigned char* done = record(i);
-      if (static_cast<std::size_t>(done - released) >= release_step) {
-        release_pages(released, done);
-        released = done;
+  // Two threads weld the two halves of the records into tables of their own; the second half's
+  // classes are then looked up in the first half's table and numbered after it in their own
+  // first-occurrence order — the numbering and representatives of one sequential pass.
+  RangeWeld low, high;
+  const std::size_t split = view.count >= 2 * records_per_thread ? 3 * (view.count / 2) : n;
+  if (split == n) {
+    weld_range(view, 0, n, w.corners.data(), release_records, low);
+  } else {
+    std::exception_ptr high_error;
+    std::thread high_thread([&] {
+      try {
+        weld_range(view, split, n, w.corners.data() + split, release_records, high);
+      } catch (...) {
+        high_error = std::current_exception();
       }
+    });
+    try {
+      weld_range(view, 0, split, w.corners.data(), release_records, low);
+    } catch (...) {
+      high_thread.join();
+      throw;
     }
+    high_thread.join();
+    if (high_error) std::rethrow_exception(high_error);
   }
   // A NaN or infinity: name the first one, with its byte offset (throws).
-  if (!finite) check_binary_stl_finite(view, name);
-  if (release_records) release_pages(released, view.records + stl_record_bytes * view.count);
+  if (!low.finite || !high.finite) check_binary_stl_finite(view, name);
 
-  w.positions.resize(keys.size());
-  for (std::size_t id = 0; id < keys.size(); ++id) {
-    const Key& k = keys[id];
+  if (split != n) {
+    std::vector<std::uint32_t> global(high.keys.size());
+    for (std::size_t j = 0; j < high.keys.size(); ++j) {
+      const std::uint32_t id = low.table.find(high.keys[j], hash_of(high.keys[j]), low.keys);
+      if (id != KeyTable::none) {
+        global[j] = id;
+      } else {
+        global[j] = static_cast<std::uint32_t>(low.keys.size());
+        low.keys.push_back(high.keys[j]);
+        low.first_vertex.push_back(high.first_vertex[j]);
+      }
+    }
+    high = RangeWeld{};
+    for (std::size_t c = split; c < n; ++c) w.corners[c] = global[w.corners[c]];
+  }
+  low.table = KeyTable(0);
+
+  w.positions.resize(low.keys.size());
+  for (std::size_t id = 0; id < low.keys.size(); ++id) {
+    const Key& k = low.keys[id];
     w.positions[id] = {std::bit_cast<float>(k[0]), std::bit_cast<float>(k[1]),
                        std::bit_cast<float>(k[2])};
   }
-  w.merged = n - keys.size();
+  w.representative = std::move(low.first_vertex);
+  w.merged = n - w.positions.size();
   return w;
 }
 

@@ -202,6 +202,21 @@ TEST(TopologyTriangles, DefectMeshesAgree) {
   EXPECT_GT(r.weld_max_moved, 0.0);
 }
 
+TEST(TopologyTriangles, LargeMeshesTakeTheTwoThreadPathAndAgree) {
+  // 81 920 triangles per sphere: the face tally runs on its own thread. Two spheres (one with
+  // holes and flipped faces) make two components, whose sums take the second face pass.
+  using namespace test;
+  const Mesh sphere = icosphere(6, 1.0);
+  const TopologyReport one = expect_passes_agree(unshared(sphere));
+  EXPECT_TRUE(one.closed);
+  EXPECT_EQ(one.components, 1u);
+  Mesh damaged = with_flipped(without_faces(sphere, {10, 11, 500, 70000}), {3, 4000, 9000});
+  const TopologyReport two = expect_passes_agree(merged(damaged, translated(sphere, {3, 0, 0})));
+  EXPECT_EQ(two.components, 2u);
+  EXPECT_GT(two.boundary_edges, 0u);
+  EXPECT_GT(two.inconsistent_edges, 0u);
+}
+
 TEST(TopologyTriangles, SharedRealMeshesAgree) {
   if (test::shared_meshes_dir().empty())
     GTEST_SKIP() << "../shared/meshes not found (" PGAMESH_SHARED_MESHES_DIR "): skipped";
@@ -293,6 +308,8 @@ TEST(TopologyTriangles, StlWeldReleasingMappedPagesGivesTheSameResult) {
   const auto memory = binary_stl_view(bytes, path);
   ASSERT_TRUE(memory.has_value());
   const WeldedTriangles kept = weld_binary_stl(*memory, path);
+  // Two threads weld the two halves; the result is the sequential weld's.
+  expect_same_weld(kept, weld_triangles(read_mesh_bytes(bytes, path)));
   {
     const MappedFile file = MappedFile::open(path);
     const auto view = binary_stl_view(file.bytes(), path);
