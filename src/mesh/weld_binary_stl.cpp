@@ -236,9 +236,18 @@ WeldedTriangles weld_binary_stl(const BinaryStlView& view, const std::string& na
   if (!low.finite || !high.finite) check_binary_stl_finite(view, name);
 
   if (split != n) {
-    std::vector<std::uint32_t> global(high.keys.size());
-    for (std::size_t j = 0; j < high.keys.size(); ++j) {
-      const std::uint32_t id = low.table.find(high.keys[j], hash_of(high.keys[j]), low.keys);
+    const std::size_t m = high.keys.size();
+    std::vector<std::uint32_t> global(m);
+    // Hashes a few keys ahead with their slots prefetched, as in the weld.
+    constexpr std::size_t ahead = 16;
+    std::array<std::uint64_t, 32> ring{};
+    for (std::size_t j = 0; j < std::min(ahead, m); ++j) ring[j & 31] = hash_of(high.keys[j]);
+    for (std::size_t j = 0; j < m; ++j) {
+      if (j + ahead < m) {
+        ring[(j + ahead) & 31] = hash_of(high.keys[j + ahead]);
+        __builtin_prefetch(low.table.slot_address(ring[(j + ahead) & 31]));
+      }
+      const std::uint32_t id = low.table.find(high.keys[j], ring[j & 31], low.keys);
       if (id != KeyTable::none) {
         global[j] = id;
       } else {
