@@ -5,7 +5,7 @@
 # and ratios as a Markdown table.
 #
 #   bench/compare_peers.sh [TRIANGLES ...]          default: 1000 10000 100000 1000000
-#   FORMATS="stl stl-ascii obj ply" REPEAT=3 WORK=/tmp/pgamesh-bench BUILD=build/release
+#   FORMATS="stl stl-ascii obj ply" REPEAT=3 WORK=/tmp/pgamesh-bench BUILD=build/release CGAL=0|1
 #
 # Peers (scripts/setup.sh bench installs them; missing ones are skipped): admesh (STL), a CGAL
 # program (bench/peers/cgal_props.cpp: PMP::volume/area/centroid), VTK vtkMassProperties
@@ -30,7 +30,9 @@ fi
 pgamesh=$root/$build/pgamesh
 gen=$root/$build/bench/pgamesh_gen_mesh
 cgal=$root/$build/bench/cgal_props
-if [ ! -x "$cgal" ] && dpkg-query -W -f='${Status}' libcgal-dev 2>/dev/null | grep -q "ok installed"; then
+if [ "${CGAL:-1}" = 0 ]; then
+  cgal=/nonexistent  # CGAL=0: leave the CGAL peer out (building it takes minutes)
+elif [ ! -x "$cgal" ] && dpkg-query -W -f='${Status}' libcgal-dev 2>/dev/null | grep -q "ok installed"; then
   echo "building the CGAL peer (takes a minute or two)..." >&2
   cmake --build --preset release -j2 --target cgal_props > /dev/null 2>&1 || true
 fi
