@@ -67,6 +67,40 @@ std::vector<std::string> split(std::string_view s, char sep) {
   }
 }
 
+// Outermorphism of the linear map given by `images` (generator i ↦ images[i]): each blade is the
+// outer product of its generators' images, expanded factor by factor. Partial expansions are
+// merged only when they grow (null pairs make equal blades that cancel or combine).
+Multivector outermorphism(const Multivector& a, const std::vector<SparseVector>& images) {
+  std::vector<Term> out, cur, next;
+  for (const Term& t : a.terms) {
+    cur.assign(1, Term{0, t.coeff});
+    for (BladeMask rest = t.mask; rest != 0; rest &= rest - 1) {
+      const int i = std::countr_zero(rest);
+      next.clear();
+      for (const Term& c : cur)
+        for (const auto& [k, v] : images[static_cast<std::size_t>(i)]) {
+          const BladeMask bit = BladeMask{1} << k;
+          if (c.mask & bit) continue;
+          next.push_back({c.mask | bit, c.coeff * v * reorder_sign(c.mask, bit)});
+        }
+      if (next.size() > 8) {
+        std::sort(next.begin(), next.end(),
+                  [](const Term& x, const Term& y) { return x.mask < y.mask; });
+        std::size_t w = 0;
+        for (std::size_t r = 0; r < next.size(); ++r) {
+          if (w > 0 && next[w - 1].mask == next[r].mask)
+            next[w - 1].coeff += next[r].coeff;
+          else
+            next[w++] = next[r];
+        }
+        next.resize(w);
+      }
+      std::swap(cur, next);
+    }
+    out.insert(out.end(), cur.begin(), cur.end());
+  }
+  return from_terms(std::move(out));
+}
 }  // namespace
 
 Algebra Algebra::signature(int p, int q, int r) {
@@ -210,7 +244,16 @@ void Algebra::finish() {
     if (s != 1.0 && s != -1.0 && s != 0.0) unit_metric_ = false;
   }
   table_.clear();
-  if (n_ <= 6) {
+  to_orthogonal_images_.clear();
+  from_orthogonal_images_.clear();
+  if (n_ <= small_generators && !diagonal_) {
+    const std::size_t size = std::size_t{1} << n_;
+    for (BladeMask m = 0; m < size; ++m) {
+      to_orthogonal_images_.push_back(outermorphism(basis_blade(m), to_orthogonal_));
+      from_orthogonal_images_.push_back(outermorphism(basis_blade(m), from_orthogonal_));
+    }
+  }
+  if (n_ <= small_generators) {
     const std::size_t size = std::size_t{1} << n_;
     std::vector<double> t(size * size);
     for (BladeMask a = 0; a < size; ++a)
@@ -230,7 +273,7 @@ void Algebra::finish() {
 double Algebra::metric_weight(BladeMask common) const {
   if (unit_metric_) {
     if (common & null_mask_) return 0.0;
-    return (std::popcount(common & negative_mask_) & 1) ? -1.0 : 1.0;
+    return odd_parity(common & negative_mask_) ? -1.0 : 1.0;
   }
   double w = 1;
   for (int k = 0; common != 0; ++k, common >>= 1)
@@ -342,43 +385,6 @@ std::vector<std::pair<std::string, double>> Algebra::named_coefficients(
   }
   return out;
 }
-
-namespace {
-// Outermorphism of the linear map given by `images` (generator i ↦ images[i]): each blade is the
-// outer product of its generators' images, expanded factor by factor. Partial expansions are
-// merged only when they grow (null pairs make equal blades that cancel or combine).
-Multivector outermorphism(const Multivector& a, const std::vector<SparseVector>& images) {
-  std::vector<Term> out, cur, next;
-  for (const Term& t : a.terms) {
-    cur.assign(1, Term{0, t.coeff});
-    for (BladeMask rest = t.mask; rest != 0; rest &= rest - 1) {
-      const int i = std::countr_zero(rest);
-      next.clear();
-      for (const Term& c : cur)
-        for (const auto& [k, v] : images[static_cast<std::size_t>(i)]) {
-          const BladeMask bit = BladeMask{1} << k;
-          if (c.mask & bit) continue;
-          next.push_back({c.mask | bit, c.coeff * v * reorder_sign(c.mask, bit)});
-        }
-      if (next.size() > 8) {
-        std::sort(next.begin(), next.end(),
-                  [](const Term& x, const Term& y) { return x.mask < y.mask; });
-        std::size_t w = 0;
-        for (std::size_t r = 0; r < next.size(); ++r) {
-          if (w > 0 && next[w - 1].mask == next[r].mask)
-            next[w - 1].coeff += next[r].coeff;
-          else
-            next[w++] = next[r];
-        }
-        next.resize(w);
-      }
-      std::swap(cur, next);
-    }
-    out.insert(out.end(), cur.begin(), cur.end());
-  }
-  return from_terms(std::move(out));
-}
-}  // namespace
 
 Multivector Algebra::to_orthogonal(const Multivector& a) const {
   return diagonal_ ? a : outermorphism(a, to_orthogonal_);

@@ -1,7 +1,11 @@
 // Products of the general engine. Every bilinear product is one kernel over pairs of terms with a
 // filter on the pair of blades; metric products run in the orthogonal basis (algebra.hpp).
 #include <algorithm>
+#include <array>
+#include <bit>
 #include <cmath>
+#include <cstdint>
+#include <span>
 #include <stdexcept>
 
 #include "pgamesh/algebra/clifford/closed_forms.hpp"
@@ -11,85 +15,175 @@ namespace pgamesh::clifford {
 
 namespace {
 
-// Sums products into blades. Up to 2^16 blades a dense scratch array indexed by mask is used (only
-// touched entries are visited afterwards); beyond that, terms are collected and merged by sorting.
-class Accumulator {
+constexpr std::size_t small_size = std::size_t{1} << Algebra::small_generators;
+constexpr int dense_generators = 16;
+
+// Non-zero terms of at most 2^small_generators blades, on the stack.
+struct SmallTerms {
+  std::array<Term, small_size> t;
+  std::size_t size = 0;
+  std::span<const Term> span() const { return {t.data(), size}; }
+};
+
+// n ≤ small_generators: the 2^n coefficients on the stack and the touched blades as one 64-bit
+// set, read back in ascending mask order without sorting.
+struct SmallAccumulator {
+  std::array<double, small_size> c;
+  std::uint64_t touched = 0;
+  explicit SmallAccumulator(int n) { std::fill_n(c.data(), std::size_t{1} << n, 0.0); }
+  void add(BladeMask m, double v) {
+    c[m] += v;
+    touched |= std::uint64_t{1} << m;
+  }
+  SmallTerms terms() const {
+    SmallTerms out;
+    for (std::uint64_t rest = touched; rest != 0; rest &= rest - 1) {
+      const auto m = static_cast<BladeMask>(std::countr_zero(rest));
+      if (c[m] != 0) out.t[out.size++] = {m, c[m]};
+    }
+    return out;
+  }
+  Multivector take() const {
+    const SmallTerms t = terms();
+    Multivector out;
+    out.terms.assign(t.t.begin(), t.t.begin() + static_cast<std::ptrdiff_t>(t.size));
+    return out;
+  }
+};
+
+// n ≤ dense_generators: a per-thread scratch array of 2^n coefficients and a bitset of the
+// touched blades (read back in ascending order word by word); both are cleared on the way out,
+// so products allocate only their result.
+class DenseAccumulator {
  public:
-  explicit Accumulator(int n) : dense_(n <= 16) {
-    if (!dense_) return;
+  explicit DenseAccumulator(int n) {
     const std::size_t size = std::size_t{1} << n;
     Scratch& s = scratch();
     if (s.buffer.size() < size) {
       s.buffer.assign(size, 0.0);
-      s.seen.assign(size, 0);
+      s.bits.assign((size + 63) / 64, 0);
     }
-    s.touched.clear();
     buffer_ = s.buffer.data();
-    seen_ = s.seen.data();
-    touched_ = &s.touched;
+    bits_ = s.bits.data();
+    words_ = (size + 63) / 64;
   }
-  void add(BladeMask m, double c) {
-    if (!dense_) {
-      list_.push_back({m, c});
-      return;
-    }
-    if (!seen_[m]) {
-      seen_[m] = 1;
-      touched_->push_back(m);
-    }
-    buffer_[m] += c;
+  DenseAccumulator(const DenseAccumulator&) = delete;
+  DenseAccumulator& operator=(const DenseAccumulator&) = delete;
+  ~DenseAccumulator() { clear(); }
+  void add(BladeMask m, double v) {
+    buffer_[m] += v;
+    bits_[m >> 6] |= std::uint64_t{1} << (m & 63);
   }
   Multivector take() {
-    if (!dense_) return from_terms(std::move(list_));
-    auto& t = *touched_;
-    std::sort(t.begin(), t.end());
+    std::size_t count = 0;
+    for (std::size_t w = 0; w < words_; ++w)
+      for (std::uint64_t rest = bits_[w]; rest != 0; rest &= rest - 1) ++count;
     Multivector out;
-    out.terms.reserve(t.size());
-    for (BladeMask m : t) {
-      if (buffer_[m] != 0) out.terms.push_back({m, buffer_[m]});
-      buffer_[m] = 0;
-      seen_[m] = 0;
-    }
-    t.clear();
+    out.terms.reserve(count);
+    for (std::size_t w = 0; w < words_; ++w)
+      for (std::uint64_t rest = bits_[w]; rest != 0; rest &= rest - 1) {
+        const auto m =
+            static_cast<BladeMask>(w * 64 + static_cast<std::size_t>(std::countr_zero(rest)));
+        if (buffer_[m] != 0) out.terms.push_back({m, buffer_[m]});
+      }
+    clear();
     return out;
   }
 
  private:
-  // Per-thread scratch, so products allocate only their result.
+  void clear() {
+    for (std::size_t w = 0; w < words_; ++w) {
+      for (std::uint64_t rest = bits_[w]; rest != 0; rest &= rest - 1)
+        buffer_[w * 64 + static_cast<std::size_t>(std::countr_zero(rest))] = 0;
+      bits_[w] = 0;
+    }
+  }
   struct Scratch {
     std::vector<double> buffer;
-    std::vector<unsigned char> seen;
-    std::vector<BladeMask> touched;
+    std::vector<std::uint64_t> bits;
   };
   static Scratch& scratch() {
     thread_local Scratch s;
     return s;
   }
-  bool dense_;
   double* buffer_ = nullptr;
-  unsigned char* seen_ = nullptr;
-  std::vector<BladeMask>* touched_ = nullptr;
-  std::vector<Term> list_;
+  std::uint64_t* bits_ = nullptr;
+  std::size_t words_ = 0;
 };
 
-// Σ over term pairs (a, b) with keep(a, b) of factor(a, b) · c_a c_b e_(a^b).
+// More generators: terms are collected and merged by sorting.
+struct ListAccumulator {
+  std::vector<Term> list;
+  void add(BladeMask m, double v) { list.push_back({m, v}); }
+  Multivector take() { return from_terms(std::move(list)); }
+};
+
+// Runs fill(accumulator) with the accumulator that suits n generators and returns the sum.
+template <class Fill>
+Multivector accumulate_with(int n, Fill fill) {
+  if (n <= Algebra::small_generators) {
+    SmallAccumulator acc(n);
+    fill(acc);
+    return acc.take();
+  }
+  if (n <= dense_generators) {
+    DenseAccumulator acc(n);
+    fill(acc);
+    return acc.take();
+  }
+  ListAccumulator acc;
+  fill(acc);
+  return acc.take();
+}
+
+// Adds Σ over term pairs (a, b) with keep(a, b) of factor(a, b) · c_a c_b e_(a^b) to acc.
+template <class Acc, class Keep, class Factor>
+void accumulate_pairs(Acc& acc, std::span<const Term> x, std::span<const Term> y, Keep keep,
+                      Factor factor) {
+  for (const Term& a : x) {
+    const BladeMask am = a.mask;
+    const double ac = a.coeff;
+    for (const Term& b : y) {
+      if (!keep(am, b.mask)) continue;
+      const double f = factor(am, b.mask);
+      if (f != 0) acc.add(am ^ b.mask, f * ac * b.coeff);
+    }
+  }
+}
+
 template <class Keep, class Factor>
 Multivector bilinear(int n, const Multivector& x, const Multivector& y, Keep keep, Factor factor) {
   if (x.terms.empty() || y.terms.empty()) return {};
-  Accumulator acc(n);
-  for (const Term& a : x.terms)
-    for (const Term& b : y.terms) {
-      if (!keep(a.mask, b.mask)) continue;
-      const double f = factor(a.mask, b.mask);
-      if (f != 0) acc.add(a.mask ^ b.mask, f * a.coeff * b.coeff);
-    }
-  return acc.take();
+  return accumulate_with(n,
+                         [&](auto& acc) { accumulate_pairs(acc, x.terms, y.terms, keep, factor); });
+}
+
+// Σ c_t · image(t.mask) for a small algebra: a change of basis through the cached blade images.
+template <class Image>
+SmallAccumulator change_basis_small(int n, std::span<const Term> x, Image image) {
+  SmallAccumulator acc(n);
+  for (const Term& t : x)
+    for (const Term& e : image(t.mask)) acc.add(e.mask, t.coeff * e.coeff);
+  return acc;
 }
 
 // A metric product: the kernel in the orthogonal basis, mapped back to the user's basis.
 template <class Keep>
 Multivector metric_product(const Algebra& alg, const Multivector& x, const Multivector& y,
                            Keep keep) {
+  if (alg.dimension() <= Algebra::small_generators) {
+    const double* table = alg.product_table().data();
+    const int n = alg.dimension();
+    auto factor = [table, n](BladeMask a, BladeMask b) { return table[(a << n) | b]; };
+    if (alg.is_diagonal()) return bilinear(n, x, y, keep, factor);
+    auto to = [&alg](BladeMask m) { return alg.orthogonal_image(m); };
+    auto from = [&alg](BladeMask m) { return alg.user_image(m); };
+    const SmallTerms xo = change_basis_small(n, x.terms, to).terms();
+    const SmallTerms yo = change_basis_small(n, y.terms, to).terms();
+    SmallAccumulator product(n);
+    accumulate_pairs(product, xo.span(), yo.span(), keep, factor);
+    return change_basis_small(n, product.terms().span(), from).take();
+  }
   auto factor = [&alg](BladeMask a, BladeMask b) { return alg.product_factor(a, b); };
   if (alg.is_diagonal()) return bilinear(alg.dimension(), x, y, keep, factor);
   return alg.from_orthogonal(
@@ -130,6 +224,28 @@ Multivector geometric(const Algebra& alg, const Multivector& a, const Multivecto
 }
 
 Multivector outer(const Algebra& alg, const Multivector& a, const Multivector& b) {
+  if (a.terms.empty() || b.terms.empty()) return {};
+  if (grades_present(b) == (1u << 1)) {
+    // A ∧ v for a vector v: visit only the generators j ∉ a (the pairs that survive), with the
+    // sign (−1)^(factors of a above j) of e_a e_j — the same terms in the same order as below.
+    std::array<double, Algebra::max_generators> v{};
+    BladeMask present = 0;
+    for (const Term& t : b.terms) {
+      v[static_cast<std::size_t>(std::countr_zero(t.mask))] = t.coeff;
+      present |= t.mask;
+    }
+    return accumulate_with(alg.dimension(), [&](auto& acc) {
+      for (const Term& x : a.terms) {
+        const BladeMask above = parity_above(x.mask);
+        for (BladeMask rest = present & ~x.mask; rest != 0; rest &= rest - 1) {
+          const BladeMask bit = rest & (~rest + 1);
+          const double sign = (above & bit) ? -1.0 : 1.0;
+          acc.add(x.mask | bit,
+                  sign * x.coeff * v[static_cast<std::size_t>(std::countr_zero(bit))]);
+        }
+      }
+    });
+  }
   return bilinear(
       alg.dimension(), a, b, [](BladeMask x, BladeMask y) { return (x & y) == 0; }, reorder_sign);
 }
@@ -196,7 +312,32 @@ Multivector inverse(const Algebra& alg, const Multivector& a) {
 }
 
 Multivector sandwich(const Algebra& alg, const Multivector& v, const Multivector& x) {
-  return geometric(alg, geometric(alg, v, x), reverse(v));
+  if (alg.dimension() > Algebra::small_generators || v.terms.empty() || x.terms.empty())
+    return geometric(alg, geometric(alg, v, x), reverse(v));
+  // Small algebras: both products on stack arrays in the orthogonal basis, with no intermediate
+  // multivector and one change of basis each way.
+  const double* table = alg.product_table().data();
+  const int n = alg.dimension();
+  auto factor = [table, n](BladeMask a, BladeMask b) { return table[(a << n) | b]; };
+  auto to = [&alg](BladeMask m) { return alg.orthogonal_image(m); };
+  auto copy = [](std::span<const Term> t) {
+    SmallTerms out;
+    for (const Term& e : t) out.t[out.size++] = e;
+    return out;
+  };
+  const SmallTerms vo =
+      alg.is_diagonal() ? copy(v.terms) : change_basis_small(n, v.terms, to).terms();
+  const SmallTerms xo =
+      alg.is_diagonal() ? copy(x.terms) : change_basis_small(n, x.terms, to).terms();
+  SmallTerms vr = vo;  // reverse Ṽ, grade by grade (the change of basis keeps grades)
+  for (std::size_t i = 0; i < vr.size; ++i) vr.t[i].coeff *= reverse_sign(grade_of(vr.t[i].mask));
+  SmallAccumulator vx(n), vxv(n);
+  accumulate_pairs(vx, vo.span(), xo.span(), keep_all, factor);
+  accumulate_pairs(vxv, vx.terms().span(), vr.span(), keep_all, factor);
+  if (alg.is_diagonal()) return vxv.take();
+  return change_basis_small(n, vxv.terms().span(),
+                            [&alg](BladeMask m) { return alg.user_image(m); })
+      .take();
 }
 
 Multivector exp(const Algebra& alg, const Multivector& a) {

@@ -87,6 +87,56 @@ Multivector homogeneous(const Algebra& alg, std::mt19937_64& rng, int k, int cou
   return grade(x, k).is_zero() ? grade(random_mv(alg, rng, count + 4, k), k) : grade(x, k);
 }
 
+// ---- the fast paths against the plain definitions ----------------------------------------------
+
+TEST(CliffordIdentities, ReorderSignCountsTranspositions) {
+  // reorder_sign by one masked parity against the count of pairs i ∈ a, j ∈ b with i > j.
+  for (BladeMask a = 0; a < 256; ++a)
+    for (BladeMask b = 0; b < 256; ++b) {
+      int swaps = 0;
+      for (int i = 0; i < 8; ++i)
+        for (int j = 0; j < i; ++j) swaps += (a >> i & 1) && (b >> j & 1);
+      ASSERT_EQ(reorder_sign(a, b), (swaps & 1) ? -1.0 : 1.0) << a << " " << b;
+    }
+  EXPECT_EQ(reorder_sign(0x80000000u, 1u), -1.0);  // the top bit
+  for (BladeMask m : {0u, 1u, 0b1011u, 0xffffffu, 0x80000001u}) {
+    int bits = 0;
+    for (BladeMask r = m; r != 0; r >>= 1) bits += static_cast<int>(r & 1u);
+    EXPECT_EQ(grade_of(m), bits);
+    EXPECT_EQ(odd_parity(m), (bits & 1) == 1);
+  }
+}
+
+TEST(CliffordIdentities, SandwichEqualsTwoProducts) {
+  // The small-algebra sandwich (stack arrays, one change of basis each way) against V X Ṽ by two
+  // geometric products, also on the null bases (cga3 through the cached blade images).
+  std::mt19937_64 rng(11);
+  for (const auto& c : algebras()) {
+    for (int trial = 0; trial < 10; ++trial) {
+      const Multivector v = random_mv(c.alg, rng, 8, c.max_grade);
+      const Multivector x = random_mv(c.alg, rng, 8, c.max_grade);
+      EXPECT_TRUE(mv_near(sandwich(c.alg, v, x),
+                          geometric(c.alg, geometric(c.alg, v, x), reverse(v)), 1e-12))
+          << c.name;
+    }
+  }
+}
+
+TEST(CliffordIdentities, OuterWithAVectorMatchesTheGeneralKernel) {
+  // A ∧ v takes the vector fast path; (−1)^k v ∧ A_k takes the general pair kernel.
+  std::mt19937_64 rng(12);
+  for (const auto& c : algebras()) {
+    for (int trial = 0; trial < 10; ++trial) {
+      const Multivector v = random_vector(c.alg, rng);
+      const Multivector a = random_mv(c.alg, rng, 10, c.max_grade);
+      Multivector expected;
+      for (int k = 0; k <= c.alg.dimension(); ++k)
+        expected = expected + involution_sign(k) * outer(c.alg, v, grade(a, k));
+      EXPECT_TRUE(mv_near(outer(c.alg, a, v), expected, 1e-14)) << c.name;
+    }
+  }
+}
+
 }  // namespace
 
 TEST(CliffordIdentities, ChangeOfBasisMatchesDirectBilinearForm) {

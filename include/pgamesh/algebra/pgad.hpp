@@ -35,32 +35,53 @@ struct Multivector {
 };
 
 namespace detail {
-// Geometric-product factors of basis blades in R(d,0,1): 0 when e0 repeats, else the reorder sign.
+// Sign tables for R(d,0,1), built at compile time:
+//  gp[a][b]   — geometric-product factor of e_a e_b: 0 when e0 repeats, else the reorder sign;
+//  join[i][j] — the sign of the term of e_(~i) ∨ e_(~j) = ((e_(~i))* ∧ (e_(~j))*)^(−*) (paper
+//               eq. 2.2), i.e. gp · dual sign of both factors · undual sign of e_(i|j), for
+//               disjoint i, j (complements within I = e0 e1 … ed).
 template <int D>
 struct ProductTable {
   static constexpr std::size_t size = Multivector<D>::size;
   std::array<std::array<signed char, size>, size> gp{};
+  std::array<std::array<signed char, size>, size> join{};
 };
 template <int D>
 constexpr ProductTable<D> make_product_table() {
   ProductTable<D> t{};
+  constexpr BladeMask all = Multivector<D>::pseudoscalar;
   for (BladeMask a = 0; a < ProductTable<D>::size; ++a)
-    for (BladeMask b = 0; b < ProductTable<D>::size; ++b)
+    for (BladeMask b = 0; b < ProductTable<D>::size; ++b) {
       t.gp[a][b] = (a & b & 1u) ? 0 : static_cast<signed char>(clifford::reorder_sign(a, b));
+      if ((a & b) == 0)
+        t.join[a][b] = static_cast<signed char>(t.gp[a][b] * clifford::dual_sign(all & ~a, D + 1) *
+                                                clifford::dual_sign(all & ~b, D + 1) *
+                                                clifford::undual_sign(a | b, D + 1));
+    }
   return t;
 }
 template <int D>
 inline constexpr ProductTable<D> product_table = make_product_table<D>();
 
+// Σ over pairs (i, j) of non-zero coefficients with keep(i, j) of gp[i][j] a_i b_j e_(i^j), in
+// ascending (i, j) order. The non-zero blades of b are listed once, so sparse operands (points,
+// motors) cost only their non-zero pairs.
 template <int D, class Keep>
 constexpr Multivector<D> product(const Multivector<D>& a, const Multivector<D>& b, Keep keep) {
+  constexpr std::size_t size = Multivector<D>::size;
+  std::array<BladeMask, size> nz{};
+  std::size_t count = 0;
+  for (BladeMask j = 0; j < size; ++j)
+    if (b.c[j] != 0) nz[count++] = j;
   Multivector<D> r{};
   const auto& t = product_table<D>.gp;
-  for (BladeMask i = 0; i < Multivector<D>::size; ++i) {
+  for (BladeMask i = 0; i < size; ++i) {
     const double ai = a.c[i];
     if (ai == 0) continue;
-    for (BladeMask j = 0; j < Multivector<D>::size; ++j)
+    for (std::size_t k = 0; k < count; ++k) {
+      const BladeMask j = nz[k];
       if (keep(i, j)) r.c[i ^ j] += t[i][j] * ai * b.c[j];
+    }
   }
   return r;
 }
@@ -138,10 +159,24 @@ template <int D>
 constexpr Multivector<D> geometric(const Multivector<D>& a, const Multivector<D>& b) {
   return detail::product(a, b, [](BladeMask, BladeMask) { return true; });
 }
-// Outer product A ∧ B (the meet).
+// Outer product A ∧ B (the meet). Only the pairs with disjoint factors are visited: j runs over
+// the subsets of ~i in ascending order (the same terms in the same order as the general product).
 template <int D>
 constexpr Multivector<D> outer(const Multivector<D>& a, const Multivector<D>& b) {
-  return detail::product(a, b, [](BladeMask i, BladeMask j) { return (i & j) == 0; });
+  constexpr BladeMask all = Multivector<D>::pseudoscalar;
+  const auto& t = detail::product_table<D>.gp;
+  Multivector<D> r{};
+  for (BladeMask i = 0; i <= all; ++i) {
+    const double ai = a.c[i];
+    if (ai == 0) continue;
+    const BladeMask free = all & ~i;
+    BladeMask j = 0;
+    do {
+      r.c[i | j] += t[i][j] * ai * b.c[j];
+      j = (j - free) & free;  // next subset of `free` in ascending order
+    } while (j != 0);
+  }
+  return r;
 }
 // Left contraction A ⌋ B.
 template <int D>
@@ -166,9 +201,26 @@ constexpr Multivector<D> undual(const Multivector<D>& a) {
   return detail::complement(a, [](BladeMask m) { return clifford::undual_sign(m, D + 1); });
 }
 // Join (regressive product) A ∨ B = (A* ∧ B*)^(−*), paper eq. 2.2.
+// Computed in one pass without forming the duals: e_p ∨ e_q ≠ 0 only when p | q = I, and then it
+// is ± e_(p&q) with the sign from detail::product_table::join. The loop visits i = ~p and
+// j ⊆ p in the order undual(outer(dual(a), dual(b))) would, so the sums round the same way.
 template <int D>
 constexpr Multivector<D> join(const Multivector<D>& a, const Multivector<D>& b) {
-  return undual(outer(dual(a), dual(b)));
+  constexpr BladeMask all = Multivector<D>::pseudoscalar;
+  const auto& t = detail::product_table<D>.join;
+  Multivector<D> r{};
+  for (BladeMask i = 0; i <= all; ++i) {
+    const BladeMask p = all & ~i;
+    const double ap = a.c[p];
+    if (ap == 0) continue;
+    BladeMask j = 0;
+    do {
+      const BladeMask q = all & ~j;
+      r.c[p & q] += t[i][j] * ap * b.c[q];
+      j = (j - p) & p;  // next subset of p in ascending order
+    } while (j != 0);
+  }
+  return r;
 }
 // v0 ∨ v1 ∨ … (left to right).
 template <int D, class... Rest>

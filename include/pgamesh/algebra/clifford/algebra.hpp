@@ -12,6 +12,7 @@
 #pragma once
 
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -79,6 +80,22 @@ class Algebra {
   Multivector to_orthogonal(const Multivector& a) const;
   Multivector from_orthogonal(const Multivector& a) const;
 
+  // Algebras with at most this many generators keep their product table and the change-of-basis
+  // images of every basis blade, so their products run on stack arrays without allocating.
+  static constexpr int small_generators = 6;
+
+  // The table of product_factor for n ≤ small_generators, indexed (a << n) | b (empty otherwise).
+  std::span<const double> product_table() const { return table_; }
+
+  // Image of the basis blade `mask` under to_orthogonal / from_orthogonal as sorted terms;
+  // cached for non-diagonal algebras with n ≤ small_generators (empty spans otherwise).
+  std::span<const Term> orthogonal_image(BladeMask mask) const {
+    return blade_image(to_orthogonal_images_, mask);
+  }
+  std::span<const Term> user_image(BladeMask mask) const {
+    return blade_image(from_orthogonal_images_, mask);
+  }
+
   // Product weight of the repeated factors `common` in the orthogonal basis: Π_{k∈common} λ_k.
   double metric_weight(BladeMask common) const;
 
@@ -92,6 +109,10 @@ class Algebra {
  private:
   Algebra() = default;
   void finish();
+  static std::span<const Term> blade_image(const std::vector<Multivector>& images, BladeMask mask) {
+    if (images.empty()) return {};
+    return images[mask].terms;
+  }
   std::string concatenated_or_joined(BladeMask mask) const;
 
   int n_ = 0;
@@ -104,6 +125,7 @@ class Algebra {
   BladeMask negative_mask_ = 0, null_mask_ = 0;
   std::vector<SparseVector> to_orthogonal_, from_orthogonal_;
   std::vector<double> table_;
+  std::vector<Multivector> to_orthogonal_images_, from_orthogonal_images_;  // by blade mask
   bool concatenated_names_ = false;
   std::vector<std::string> custom_names_;  // indexed by mask (empty when none)
   std::vector<double> custom_signs_;

@@ -3,24 +3,47 @@
 // engine (clifford::Algebra) and the compile-time PGA R(d,0,1) (pgad) both call them.
 #pragma once
 
-#include <bit>
 #include <cstdint>
 
 namespace pgamesh::clifford {
 
 using BladeMask = std::uint32_t;
 
-// Grade of a basis blade = number of its factors.
+// Grade of a basis blade = number of its factors. Counted with shifts and masks: without
+// -mpopcnt, std::popcount is a library call, too slow for the inner loops of the products.
 constexpr int grade_of(BladeMask m) {
-  return std::popcount(m);
+  m = m - ((m >> 1) & 0x55555555u);
+  m = (m & 0x33333333u) + ((m >> 2) & 0x33333333u);
+  m = (m + (m >> 4)) & 0x0f0f0f0fu;
+  return static_cast<int>((m * 0x01010101u) >> 24);
+}
+
+// Bit j of the result is the parity of the factors of `a` above generator j (a suffix XOR), so
+// the parity of the swaps in reorder_sign is one masked parity whatever the grades.
+constexpr BladeMask parity_above(BladeMask a) {
+  BladeMask p = a >> 1;
+  p ^= p >> 1;
+  p ^= p >> 2;
+  p ^= p >> 4;
+  p ^= p >> 8;
+  p ^= p >> 16;
+  return p;
+}
+
+// Parity of the number of set bits, by folding (see grade_of on std::popcount).
+constexpr bool odd_parity(BladeMask x) {
+  x ^= x >> 16;
+  x ^= x >> 8;
+  x ^= x >> 4;
+  x ^= x >> 2;
+  x ^= x >> 1;
+  return (x & 1u) != 0;
 }
 
 // Sign of e_a e_b = ±e_a e_b reordered into ascending factors (before metric contraction):
 // (−1)^(number of pairs i in a, j in b with i > j), the transpositions that sort the factors.
 constexpr double reorder_sign(BladeMask a, BladeMask b) {
-  int swaps = 0;
-  for (a >>= 1; a != 0; a >>= 1) swaps += std::popcount(a & b);
-  return (swaps & 1) ? -1.0 : 1.0;
+  return odd_parity(parity_above(a) & b) ? -1.0 : 1.0;
 }
 
 // Sign of the reverse of a grade-k blade: (−1)^(k(k−1)/2).
