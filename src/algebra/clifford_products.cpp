@@ -10,6 +10,7 @@
 
 #include "pgamesh/algebra/clifford/closed_forms.hpp"
 #include "pgamesh/algebra/clifford/products.hpp"
+#include "pgamesh/algebra/pgad.hpp"
 
 namespace pgamesh::clifford {
 
@@ -211,6 +212,29 @@ bool only_grades(const Multivector& a, unsigned allowed, double scale) {
   return true;
 }
 
+// d when the algebra is PGA R(d,0,1) with e0 first (Algebra::signature(d,0,1), the pgaN
+// presets): then its blade masks are those of pgad::Multivector<d>. 0 otherwise.
+int pga_dimension(const Algebra& alg) {
+  if (!alg.is_diagonal()) return 0;
+  const auto& s = alg.orthogonal_squares();
+  if (s[0] != 0) return 0;
+  for (std::size_t k = 1; k < s.size(); ++k)
+    if (s[k] != 1) return 0;
+  return alg.dimension() - 1;
+}
+
+// f applied to A through pgad::Multivector<D> (same blade masks, see pga_dimension).
+template <int D, class F>
+Multivector through_pgad(const Multivector& a, F f) {
+  pgad::Multivector<D> p{};
+  for (const Term& t : a.terms) p.c[t.mask] = t.coeff;
+  const pgad::Multivector<D> r = f(p);
+  Multivector out;
+  for (BladeMask m = 0; m < r.size; ++m)
+    if (r.c[m] != 0) out.terms.push_back({m, r.c[m]});
+  return out;
+}
+
 bool is_pga3(const Algebra& alg) {
   if (alg.dimension() != 4) return false;
   const auto& s = alg.orthogonal_squares();
@@ -360,6 +384,12 @@ Multivector exp(const Algebra& alg, const Multivector& a) {
     const Multivector ib = geometric(alg, pseudoscalar(alg), b);
     return es * (scalar(e.c0) + basis_blade(i_mask, e.cI) + e.cL * b + e.cIL * ib);
   }
+  // R(4,0,1), R(5,0,1): the invariant decomposition into commuting rotations and a translation.
+  if (only_grades(b, 1u << 2, max_abs_coeff(b))) {
+    const int d = pga_dimension(alg);
+    if (d == 4) return es * through_pgad<4>(b, [](const auto& x) { return pgad::exp(x); });
+    if (d == 5) return es * through_pgad<5>(b, [](const auto& x) { return pgad::exp(x); });
+  }
   // Scaling and squaring: exp(B) = exp(B / 2^k)^(2^k) with |B / 2^k| ≤ ½, Taylor to round-off.
   int k = 0;
   double size = 0;
@@ -396,8 +426,14 @@ Multivector log(const Algebra& alg, const Multivector& a) {
     const StudyLog l = study_log(s, std::sqrt(e2), a[alg.pseudoscalar_mask()]);
     return l.cL * b + l.cIL * geometric(alg, pseudoscalar(alg), b);
   }
+  if (only_grades(a, 0b1010101u, scale)) {  // R(4,0,1), R(5,0,1): the invariant decomposition
+    const int d = pga_dimension(alg);
+    if (d == 4) return through_pgad<4>(a, [](const auto& x) { return pgad::log(x); });
+    if (d == 5) return through_pgad<5>(a, [](const auto& x) { return pgad::log(x); });
+  }
   throw std::domain_error(
-      "log: defined here for rotors and motors s + B with B^2 a scalar, and for R(3,0,1) motors");
+      "log: defined here for rotors and motors s + B with B^2 a scalar, for R(3,0,1) motors and "
+      "for R(4,0,1), R(5,0,1) motors without isoclinic planes");
 }
 
 Multivector sqrt(const Algebra& alg, const Multivector& a) {

@@ -57,12 +57,14 @@ Multivector inverse(const Algebra& alg, const Multivector& a);
 Multivector sandwich(const Algebra& alg, const Multivector& v, const Multivector& x);
 
 // exp(A): closed forms when A² is a scalar (cos/sin, cosh/sinh, 1 + A) or, in R(3,0,1), a scalar
-// plus pseudoscalar (screw motion, dual-number angle); otherwise a scaled-and-squared Taylor
-// series.
+// plus pseudoscalar (screw motion, dual-number angle); in R(4,0,1) and R(5,0,1) the invariant
+// decomposition into commuting simple bivectors (pgad::invariant_split); otherwise a
+// scaled-and-squared Taylor series.
 Multivector exp(const Algebra& alg, const Multivector& a);
 
-// log of a normalised rotor or motor s + B (+ p I): closed forms when B² is a scalar, and the
-// screw (Study number) form in R(3,0,1). Throws std::domain_error when no closed form applies.
+// log of a normalised rotor or motor s + B (+ p I): closed forms when B² is a scalar, the screw
+// (Study number) form in R(3,0,1), and the invariant decomposition in R(4,0,1), R(5,0,1)
+// (pgad::log). Throws std::domain_error when no closed form applies.
 Multivector log(const Algebra& alg, const Multivector& a);
 
 // Square root of a normalised rotor or motor: exp(½ log R).
