@@ -238,7 +238,7 @@ void write_header(JsonWriter& w, const Options& o, const tank::Tank& t, const Ta
 }
 
 void write_attitude(JsonWriter& w, const Options& o, const Attitude& a) {
-  w.begin_array("up").number(a.up.x).number(a.up.y).number(a.up.z).end_array();
+  w.vec3("up", a.up);
   if (o.attitude) {
     w.number("pitch_deg", a.pitch_deg);
     w.number("roll_deg", a.roll_deg);

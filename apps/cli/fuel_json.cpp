@@ -7,10 +7,6 @@ namespace pgamesh::cli {
 
 namespace {
 
-void write_vec(JsonWriter& w, std::string_view key, Vec3d v) {
-  w.begin_array(key).number(v.x).number(v.y).number(v.z).end_array();
-}
-
 std::string num(double v) {
   if (!std::isfinite(v)) return "";
   char buf[32];
@@ -27,15 +23,11 @@ void write_fuel_state(JsonWriter& w, const tank::FuelState& st, const tank::Leve
   w.number("fraction", st.fraction);
   w.number("mass", density * st.volume);
   if (st.has_center) {
-    write_vec(w, "center_of_mass", st.center_of_mass);
-    w.begin_array("inertia_com");
-    for (const auto& row : st.inertia_com)
-      w.begin_array()
-          .number(density * row[0])
-          .number(density * row[1])
-          .number(density * row[2])
-          .end_array();
-    w.end_array();
+    w.vec3("center_of_mass", st.center_of_mass);
+    Mat3 inertia = st.inertia_com;
+    for (auto& row : inertia)
+      for (double& x : row) x *= density;
+    w.matrix3("inertia_com", inertia);
   } else {
     w.null("center_of_mass");
     w.null("inertia_com");
@@ -43,14 +35,11 @@ void write_fuel_state(JsonWriter& w, const tank::FuelState& st, const tank::Leve
   w.number("wetted_area", st.wetted_area);
   w.number("surface_area", st.surface_area);
   if (st.surface.area > 0) {
-    write_vec(w, "surface_centroid", st.surface.centroid);
+    w.vec3("surface_centroid", st.surface.centroid);
   } else {
     w.null("surface_centroid");
   }
-  w.begin_array("surface_axes");
-  write_vec(w, {}, st.surface.axis1);
-  write_vec(w, {}, st.surface.axis2);
-  w.end_array();
+  w.begin_array("surface_axes").vec3(st.surface.axis1).vec3(st.surface.axis2).end_array();
   const auto& m = st.surface.second;
   w.begin_array("surface_second_moment")
       .begin_array()
