@@ -180,6 +180,15 @@ TEST(StlAsciiMass, DeclinesWhatTheCarefulReaderMustSee) {
     EXPECT_FALSE(fused(text)) << text;
 }
 
+TEST(StlAsciiMass, DeclinesALargeFileWithoutNewlines) {
+  // Several pieces' worth of one line: sampling and piece boundaries scan it once each.
+  std::string text = "solid x";
+  while (text.size() < 4 * stl_ascii_piece_bytes) text += " facet vertex 1 2 3";
+  EXPECT_FALSE(fused(text));
+  text += "\nendsolid x\n";
+  EXPECT_FALSE(fused(text));
+}
+
 TEST(StlAsciiMass, DeclinesTroubleInALaterPiece) {
   const std::string& good = large_sphere_text();
   ASSERT_TRUE(fused(good));
