@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "pgamesh/geometry/chunked_sums.hpp"
+#include "pgamesh/mesh/read_mesh.hpp"
 #include "readers.hpp"
 #include "text_cursor.hpp"
 
@@ -184,6 +185,9 @@ Box3 vertex_box(const char* begin, const char* end) {
 std::optional<MassProperties> ascii_stl_mass_properties(std::span<const char> bytes,
                                                         const std::string& name,
                                                         const MassOptions& options) {
+  // What read_mesh_bytes() would not read as ASCII STL — e.g. text with a control byte in its
+  // first KiB, which it takes for a broken binary STL — is not ours to read either.
+  if (detect_format(bytes) != MeshFormat::stl_ascii) return std::nullopt;
   const char* first = bytes.data();
   const char* end = first + bytes.size();
   if (bytes.size() >= 3 && std::memcmp(first, "\xEF\xBB\xBF", 3) == 0) first += 3;  // BOM

@@ -176,6 +176,9 @@ TEST(StlAsciiMass, DeclinesWhatTheCarefulReaderMustSee) {
            head + "endsolid t\n",                                     // no facets
            std::string("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"),       // not STL
            std::string(""),
+           // A control byte in the first KiB: read_mesh_bytes takes it for a broken binary STL.
+           head + "facet normal \x03\n outer loop\n  vertex 0 0 0\n  vertex 1 0 0\n"
+                  "  vertex 0 1 0\n endloop\nendfacet\nendsolid t\n",
        })
     EXPECT_FALSE(fused(text)) << text;
 }

@@ -26,9 +26,9 @@ inline constexpr std::size_t stl_ascii_piece_bytes = std::size_t{1} << 19;
 // of a sample of its vertices (of every vertex when the file is at most one piece). Fills faces =
 // triangles = facets and vertices = 3 × facets; adds the reader's "missing 'endsolid'" warning
 // (with `name`) when the last solid is not closed. Returns nullopt when the bytes are not an ASCII
-// STL of plain triangular facets (see above): read them with read_mesh_bytes() instead. Never
-// throws for bad input; std::invalid_argument for a non-finite density or mass, as
-// mass_properties_from_sums().
+// STL of plain triangular facets (see above), or not detected as ASCII STL by detect_format(): read
+// them with read_mesh_bytes() instead. Never throws for bad input; std::invalid_argument for a
+// non-finite density or mass, as mass_properties_from_sums().
 std::optional<MassProperties> ascii_stl_mass_properties(std::span<const char> bytes,
                                                         const std::string& name,
                                                         const MassOptions& options = {});
