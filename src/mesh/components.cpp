@@ -2,20 +2,11 @@
 
 #include <algorithm>
 
+#include "union_find.hpp"
+
 namespace pgamesh {
 
-namespace {
-
-// Union–find whose root is always the lowest face of its set (union by index, path halving).
-std::uint32_t find_root(std::vector<std::uint32_t>& parent, std::uint32_t x) {
-  while (parent[x] != x) {
-    parent[x] = parent[parent[x]];
-    x = parent[x];
-  }
-  return x;
-}
-
-}  // namespace
+using detail::find_root;
 
 FaceComponents face_components(const Mesh& mesh, const EdgeTable& edges) {
   const std::size_t face_count = mesh.face_count();

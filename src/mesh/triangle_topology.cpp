@@ -8,20 +8,13 @@
 
 #include "pgamesh/mesh/boundary_loops.hpp"
 #include "topology_parts.hpp"
+#include "union_find.hpp"
 
 namespace pgamesh {
 
 namespace {
 
-// Union–find whose root is always the lowest face of its set (union by index, path halving), as in
-// components.cpp.
-std::uint32_t find_root(std::vector<std::uint32_t>& parent, std::uint32_t x) {
-  while (parent[x] != x) {
-    parent[x] = parent[parent[x]];
-    x = parent[x];
-  }
-  return x;
-}
+using detail::find_root;
 
 // An edge that is not used exactly twice in opposite directions, kept until the components are
 // known.

@@ -9,20 +9,13 @@
 #include <string>
 #include <unordered_map>
 
+#include "weld_table.hpp"
+
 namespace pgamesh {
 
 namespace {
 
-// MurmurHash3's 64-bit finaliser: every input bit affects every output bit, so coordinates that
-// differ only in their last mantissa bits still land in different slots.
-inline std::uint64_t mix64(std::uint64_t h) {
-  h ^= h >> 33;
-  h *= 0xff51afd7ed558ccdULL;
-  h ^= h >> 33;
-  h *= 0xc4ceb9fe1a85ec53ULL;
-  h ^= h >> 33;
-  return h;
-}
+using detail::mix64;
 
 // The bits of a coordinate with −0 mapped to +0 (−0 + 0 = +0 in round-to-nearest), so that the two
 // zeros weld while every other value welds only with itself.
@@ -44,61 +37,11 @@ inline std::uint64_t hash_of(const Key& k) {
   return mix64(k.x ^ mix64(k.y ^ mix64(k.z + 0x9e3779b97f4a7c15ULL)));
 }
 
-// Open addressing with linear probing. A slot holds (upper 32 hash bits << 32) | (welded id + 1),
-// 0 = empty: the tag rejects almost every non-matching slot without touching the key array.
-class ExactTable {
- public:
-  explicit ExactTable(std::size_t expected) {
-    std::size_t cap = 64;
-    while (cap < 2 * expected) cap *= 2;
-    slots_.assign(cap, 0);
-    mask_ = cap - 1;
-  }
-
-  const std::uint64_t* slot_address(std::uint64_t h) const { return &slots_[h & mask_]; }
-
-  // Returns the welded id of `k` (hash `h`), inserting `next_id` when it is new.
-  std::uint32_t find_or_insert(const Key& k, std::uint64_t h, std::vector<Key>& keys,
-                               bool& inserted) {
-    const std::uint64_t tag = h >> 32;
-    std::size_t pos = h & mask_;
-    for (;;) {
-      const std::uint64_t s = slots_[pos];
-      if (s == 0) {
-        const auto id = static_cast<std::uint32_t>(keys.size());
-        keys.push_back(k);
-        slots_[pos] = (tag << 32) | (std::uint64_t(id) + 1);
-        inserted = true;
-        if (2 * keys.size() > slots_.size()) grow(keys);
-        return id;
-      }
-      if ((s >> 32) == tag) {
-        const auto id = static_cast<std::uint32_t>((s & 0xffffffffULL) - 1);
-        if (keys[id] == k) {
-          inserted = false;
-          return id;
-        }
-      }
-      pos = (pos + 1) & mask_;
-    }
-  }
-
- private:
-  void grow(const std::vector<Key>& keys) {
-    std::vector<std::uint64_t> old(slots_.size() * 2, 0);
-    old.swap(slots_);
-    mask_ = slots_.size() - 1;
-    for (std::size_t id = 0; id < keys.size(); ++id) {
-      const std::uint64_t h = hash_of(keys[id]);
-      std::size_t pos = h & mask_;
-      while (slots_[pos] != 0) pos = (pos + 1) & mask_;
-      slots_[pos] = ((h >> 32) << 32) | (std::uint64_t(id) + 1);
-    }
-  }
-
-  std::vector<std::uint64_t> slots_;
-  std::size_t mask_ = 0;
+struct ExactTraits {
+  static std::uint64_t hash(const Key& k) { return hash_of(k); }
+  static bool same(const Key& a, const Key& b) { return a == b; }
 };
+using ExactTable = detail::WeldTable<Key, ExactTraits>;
 
 WeldMap weld_exact(std::span<const Vec3d> v) {
   WeldMap out;

@@ -13,10 +13,13 @@
 
 #include "pgamesh/input_error.hpp"
 #include "pgamesh/mesh/welded_triangles.hpp"
+#include "weld_table.hpp"
 
 namespace pgamesh {
 
 namespace {
+
+using detail::mix64;
 
 using Key = std::array<std::uint32_t, 3>;
 
@@ -25,16 +28,6 @@ inline std::uint32_t load_le32(const unsigned char* p) {
   std::memcpy(&u, p, 4);
   if constexpr (std::endian::native == std::endian::big) u = __builtin_bswap32(u);
   return u;
-}
-
-// MurmurHash3's 64-bit finaliser (as in weld.cpp): every key bit affects every slot bit.
-inline std::uint64_t mix64(std::uint64_t h) {
-  h ^= h >> 33;
-  h *= 0xff51afd7ed558ccdULL;
-  h ^= h >> 33;
-  h *= 0xc4ceb9fe1a85ec53ULL;
-  h ^= h >> 33;
-  return h;
 }
 
 // The key with −0 folded to +0 (the bits of −0 are 0x80000000), so that the two zeros weld while
@@ -62,75 +55,12 @@ inline bool vertex_key(const unsigned char* r, int k, Key& key) {
   return finite;
 }
 
-// Open addressing with linear probing; a slot holds (upper 32 hash bits << 32) | (id + 1), 0 =
-// empty, so almost every non-matching slot is rejected without touching the key array.
-class KeyTable {
- public:
-  explicit KeyTable(std::size_t expected) {
-    std::size_t cap = 64;
-    while (cap < 2 * expected) cap *= 2;
-    slots_.assign(cap, 0);
-    mask_ = cap - 1;
-  }
-
-  const std::uint64_t* slot_address(std::uint64_t h) const { return &slots_[h & mask_]; }
-
-  // The id of `k` (hash h) among `keys`, or none.
-  std::uint32_t find(const Key& k, std::uint64_t h, const std::vector<Key>& keys) const {
-    const std::uint64_t tag = h >> 32;
-    for (std::size_t pos = h & mask_;; pos = (pos + 1) & mask_) {
-      const std::uint64_t s = slots_[pos];
-      if (s == 0) return none;
-      if ((s >> 32) == tag) {
-        const auto id = static_cast<std::uint32_t>((s & 0xffffffffULL) - 1);
-        if (folded(keys[id]) == folded(k)) return id;
-      }
-    }
-  }
-
-  static constexpr std::uint32_t none = 0xffffffffu;
-
-  // The id of `k` (hash h), appending it to `keys` when it is new. Keys keep their own bits (the
-  // representative's coordinates, −0 included) and compare folded.
-  std::uint32_t find_or_insert(const Key& k, std::uint64_t h, std::vector<Key>& keys,
-                               bool& inserted) {
-    const std::uint64_t tag = h >> 32;
-    for (std::size_t pos = h & mask_;; pos = (pos + 1) & mask_) {
-      const std::uint64_t s = slots_[pos];
-      if (s == 0) {
-        const auto id = static_cast<std::uint32_t>(keys.size());
-        keys.push_back(k);
-        slots_[pos] = (tag << 32) | (std::uint64_t{id} + 1);
-        inserted = true;
-        if (2 * keys.size() > slots_.size()) grow(keys);
-        return id;
-      }
-      if ((s >> 32) == tag) {
-        const auto id = static_cast<std::uint32_t>((s & 0xffffffffULL) - 1);
-        if (folded(keys[id]) == folded(k)) {
-          inserted = false;
-          return id;
-        }
-      }
-    }
-  }
-
- private:
-  void grow(const std::vector<Key>& keys) {
-    std::vector<std::uint64_t> old(slots_.size() * 2, 0);
-    old.swap(slots_);
-    mask_ = slots_.size() - 1;
-    for (std::size_t id = 0; id < keys.size(); ++id) {
-      const std::uint64_t h = hash_of(keys[id]);
-      std::size_t pos = h & mask_;
-      while (slots_[pos] != 0) pos = (pos + 1) & mask_;
-      slots_[pos] = ((h >> 32) << 32) | (std::uint64_t{id} + 1);
-    }
-  }
-
-  std::vector<std::uint64_t> slots_;
-  std::size_t mask_ = 0;
+// Keys keep their own bits (the representative's coordinates, −0 included) and compare folded.
+struct RecordTraits {
+  static std::uint64_t hash(const Key& k) { return hash_of(k); }
+  static bool same(const Key& a, const Key& b) { return folded(a) == folded(b); }
 };
+using KeyTable = detail::WeldTable<Key, RecordTraits>;
 
 // Gives the pages of [from, to) back to the kernel, page-aligned inwards.
 void release_pages(const unsigned char* from, const unsigned char* to) {

@@ -1,0 +1,95 @@
+// Internal: the open-addressing table behind the exact welds (weld.cpp for meshes of doubles,
+// weld_binary_stl.cpp for float32 STL records), and the hash mixer they share.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace pgamesh::detail {
+
+// MurmurHash3's 64-bit finaliser: every input bit affects every output bit, so coordinates that
+// differ only in their last mantissa bits still land in different slots.
+inline std::uint64_t mix64(std::uint64_t h) {
+  h ^= h >> 33;
+  h *= 0xff51afd7ed558ccdULL;
+  h ^= h >> 33;
+  h *= 0xc4ceb9fe1a85ec53ULL;
+  h ^= h >> 33;
+  return h;
+}
+
+// Open addressing with linear probing over ids into a caller's key array. A slot holds
+// (upper 32 hash bits << 32) | (id + 1), 0 = empty: the tag rejects almost every non-matching
+// slot without touching the key array. Traits supplies `static std::uint64_t hash(const Key&)`
+// and `static bool same(const Key&, const Key&)` (the weld's notion of equal coordinates).
+template <class Key, class Traits>
+class WeldTable {
+ public:
+  static constexpr std::uint32_t none = 0xffffffffu;
+
+  explicit WeldTable(std::size_t expected) {
+    std::size_t cap = 64;
+    while (cap < 2 * expected) cap *= 2;
+    slots_.assign(cap, 0);
+    mask_ = cap - 1;
+  }
+
+  // Where the probe for hash h starts (for prefetching).
+  const std::uint64_t* slot_address(std::uint64_t h) const { return &slots_[h & mask_]; }
+
+  // The id of `k` (hash h) among `keys`, or none.
+  std::uint32_t find(const Key& k, std::uint64_t h, const std::vector<Key>& keys) const {
+    const std::uint64_t tag = h >> 32;
+    for (std::size_t pos = h & mask_;; pos = (pos + 1) & mask_) {
+      const std::uint64_t s = slots_[pos];
+      if (s == 0) return none;
+      if ((s >> 32) == tag) {
+        const auto id = static_cast<std::uint32_t>((s & 0xffffffffULL) - 1);
+        if (Traits::same(keys[id], k)) return id;
+      }
+    }
+  }
+
+  // The id of `k` (hash h), appending it to `keys` when it is new (then `inserted` is true).
+  std::uint32_t find_or_insert(const Key& k, std::uint64_t h, std::vector<Key>& keys,
+                               bool& inserted) {
+    const std::uint64_t tag = h >> 32;
+    for (std::size_t pos = h & mask_;; pos = (pos + 1) & mask_) {
+      const std::uint64_t s = slots_[pos];
+      if (s == 0) {
+        const auto id = static_cast<std::uint32_t>(keys.size());
+        keys.push_back(k);
+        slots_[pos] = (tag << 32) | (std::uint64_t{id} + 1);
+        inserted = true;
+        if (2 * keys.size() > slots_.size()) grow(keys);
+        return id;
+      }
+      if ((s >> 32) == tag) {
+        const auto id = static_cast<std::uint32_t>((s & 0xffffffffULL) - 1);
+        if (Traits::same(keys[id], k)) {
+          inserted = false;
+          return id;
+        }
+      }
+    }
+  }
+
+ private:
+  void grow(const std::vector<Key>& keys) {
+    std::vector<std::uint64_t> old(slots_.size() * 2, 0);
+    old.swap(slots_);
+    mask_ = slots_.size() - 1;
+    for (std::size_t id = 0; id < keys.size(); ++id) {
+      const std::uint64_t h = Traits::hash(keys[id]);
+      std::size_t pos = h & mask_;
+      while (slots_[pos] != 0) pos = (pos + 1) & mask_;
+      slots_[pos] = ((h >> 32) << 32) | (std::uint64_t{id} + 1);
+    }
+  }
+
+  std::vector<std::uint64_t> slots_;
+  std::size_t mask_ = 0;
+};
+
+}  // namespace pgamesh::detail
