@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <utility>
 
+#include "edge_group.hpp"
+
 namespace pgamesh {
 
 namespace {
@@ -70,7 +72,7 @@ EdgeTable build_edges(const Mesh& mesh, std::span<const std::uint32_t> welded_co
   t.v1.reserve(live / 2 + 1);
   t.use_offsets.reserve(live / 2 + 2);
   t.uses.resize(live);
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> group;  // (larger end, corner), reused
+  detail::EdgeGroup group;  // (larger end, corner), reused
   std::size_t out = 0;
   for (std::uint32_t v = 0; v < welded_vertex_count; ++v) {
     const std::uint32_t begin = start[v], end = start[v + 1];
@@ -81,14 +83,7 @@ EdgeTable build_edges(const Mesh& mesh, std::span<const std::uint32_t> welded_co
       const std::uint32_t a = welded_corner[c], b = welded_corner[next_corner(mesh, t, c)];
       group.emplace_back(std::max(a, b), c);
     }
-    if (group.size() <= 16) {
-      for (std::size_t i = 1; i < group.size(); ++i)  // insertion sort: stable, tiny input
-        for (std::size_t j = i; j > 0 && group[j - 1].first > group[j].first; --j)
-          std::swap(group[j - 1], group[j]);
-    } else {
-      std::stable_sort(group.begin(), group.end(),
-                       [](const auto& x, const auto& y) { return x.first < y.first; });
-    }
+    detail::sort_by_upper_end(group);
     for (std::size_t i = 0; i < group.size();) {
       const auto e = static_cast<std::uint32_t>(t.v0.size());
       t.v0.push_back(v);

@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "edge_group.hpp"
 #include "pgamesh/mesh/boundary_loops.hpp"
 #include "topology_parts.hpp"
 #include "union_find.hpp"
@@ -80,7 +81,7 @@ EdgePass edge_pass(const WeldedTriangles& mesh) {
   // Each vertex's bucket grouped by upper end: one group per edge, edges in (v0, v1) order.
   std::vector<std::uint32_t> parent(face_count);
   for (std::size_t f = 0; f < face_count; ++f) parent[f] = static_cast<std::uint32_t>(f);
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> group;  // (upper end, half-edge)
+  detail::EdgeGroup group;  // (upper end, half-edge)
   std::size_t edge_count = 0;
   for (std::uint32_t v = 0; v < vertex_count; ++v) {
     group.clear();
@@ -88,14 +89,7 @@ EdgePass edge_pass(const WeldedTriangles& mesh) {
       const std::uint32_t h = bucket[i];
       group.emplace_back(std::max(corner[h], head(corner, h)), h);
     }
-    if (group.size() <= 16) {
-      for (std::size_t i = 1; i < group.size(); ++i)  // insertion sort: stable, tiny input
-        for (std::size_t j = i; j > 0 && group[j - 1].first > group[j].first; --j)
-          std::swap(group[j - 1], group[j]);
-    } else {
-      std::stable_sort(group.begin(), group.end(),
-                       [](const auto& x, const auto& y) { return x.first < y.first; });
-    }
+    detail::sort_by_upper_end(group);
     for (std::size_t i = 0; i < group.size();) {
       const std::uint32_t upper = group[i].first;
       std::size_t end = i + 1;
