@@ -46,7 +46,10 @@ void judge(PropsReport& r) {
 
 }  // namespace
 
-PropsReport props_of_mesh(const Mesh& mesh, const MeshSource& source, const PropsOptions& options) {
+namespace {
+
+// The report without the topology: mass properties, warnings.
+PropsReport mass_report(const Mesh& mesh, const MeshSource& source, const PropsOptions& options) {
   PropsReport r;
   r.file = source.path;
   r.format = source.format;
@@ -55,6 +58,13 @@ PropsReport props_of_mesh(const Mesh& mesh, const MeshSource& source, const Prop
   r.mass = mass_properties(mesh, options.mass, &source);
   r.warnings = source.warnings;
   r.warnings.insert(r.warnings.end(), r.mass.warnings.begin(), r.mass.warnings.end());
+  return r;
+}
+
+}  // namespace
+
+PropsReport props_of_mesh(const Mesh& mesh, const MeshSource& source, const PropsOptions& options) {
+  PropsReport r = mass_report(mesh, source, options);
   if (options.topology) r.topology = analyze_topology(mesh, options.topology_options);
   judge(r);
   return r;
@@ -111,10 +121,15 @@ PropsReport props_of(std::span<const char> bytes, const std::string& name,
       }
     }
   }
+  // The careful readers, releasing the file's pages as they parse (release_records); the mesh is
+  // then handed to the topology pass, which frees it once welded (topology.hpp).
   MeshSource source;
-  const Mesh mesh = read_mesh_bytes(bytes, name, &source, options.format);
+  Mesh mesh = read_mesh_bytes(bytes, name, &source, options.format, release_records);
   source.path = name;
-  return props_of_mesh(mesh, source, options);
+  PropsReport r = mass_report(mesh, source, options);
+  if (options.topology) r.topology = analyze_topology(std::move(mesh), options.topology_options);
+  judge(r);
+  return r;
 }
 
 }  // namespace

@@ -114,7 +114,7 @@ MeshFormat format_from_name(std::string_view name) {
 }
 
 Mesh read_mesh_bytes(std::span<const char> bytes, const std::string& name, MeshSource* source,
-                     MeshFormat format) {
+                     MeshFormat format, bool release_pages) {
   MeshSource local;
   MeshSource& src = source ? *source : local;
   src = MeshSource{};
@@ -126,15 +126,15 @@ Mesh read_mesh_bytes(std::span<const char> bytes, const std::string& name, MeshS
   const MeshFormat f = format == MeshFormat::unknown ? detect_format(bytes) : format;
   if (is_stl_family(f)) {
     if (binary_stl_view(bytes, name))
-      detail::read_stl_binary(bytes, name, mesh, src);
+      detail::read_stl_binary(bytes, name, mesh, src, release_pages);
     else
-      detail::read_stl_ascii(bytes, name, mesh, src);
+      detail::read_stl_ascii(bytes, name, mesh, src, release_pages);
   } else if (is_ply_family(f)) {
-    detail::read_ply(bytes, name, mesh, src);
+    detail::read_ply(bytes, name, mesh, src, release_pages);
   } else if (f == MeshFormat::obj) {
-    detail::read_obj(bytes, name, mesh, src);
+    detail::read_obj(bytes, name, mesh, src, release_pages);
   } else if (f == MeshFormat::off) {
-    detail::read_off(bytes, name, mesh, src);
+    detail::read_off(bytes, name, mesh, src, release_pages);
   } else {
     throw InputError(name, detail::text_position(bytes.data(), bytes.data()),
                      "unrecognised mesh format (expected STL, OBJ, PLY or OFF content)");
@@ -144,7 +144,7 @@ Mesh read_mesh_bytes(std::span<const char> bytes, const std::string& name, MeshS
 
 Mesh read_mesh(const std::string& path, MeshSource* source, MeshFormat format) {
   const MappedFile file = MappedFile::open(path);
-  return read_mesh_bytes(file.bytes(), path, source, format);
+  return read_mesh_bytes(file.bytes(), path, source, format, file.mapped());
 }
 
 }  // namespace pgamesh

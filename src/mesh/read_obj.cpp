@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <string>
 
+#include "page_release.hpp"
 #include "pgamesh/input_error.hpp"
 #include "readers.hpp"
 #include "text_cursor.hpp"
@@ -32,9 +33,10 @@ bool is_unsupported_statement(std::string_view w) {
 
 }  // namespace
 
-void read_obj(std::span<const char> bytes, const std::string& name, Mesh& mesh,
-              MeshSource& source) {
+void read_obj(std::span<const char> bytes, const std::string& name, Mesh& mesh, MeshSource& source,
+              bool release_pages) {
   TextCursor c(bytes, name);
+  PageRelease release(bytes.data(), release_pages);
   source.format = MeshFormat::obj;
   mesh.vertices.reserve(bytes.size() / 64);  // estimates only; vectors grow past them
   mesh.corners.reserve(bytes.size() / 16);
@@ -48,6 +50,7 @@ void read_obj(std::span<const char> bytes, const std::string& name, Mesh& mesh,
   const char* first_unsupported = nullptr;
 
   while (!c.at_end()) {
+    release.passed(c.p);
     c.skip_blanks();
     if (c.at_eol()) {
       if (!c.at_end()) ++c.p;

@@ -4,6 +4,7 @@
 // a comment. 4OFF / nOFF (other dimensions) and binary OFF are rejected with an error.
 #include <string>
 
+#include "page_release.hpp"
 #include "pgamesh/input_error.hpp"
 #include "readers.hpp"
 #include "text_cursor.hpp"
@@ -37,9 +38,10 @@ std::uint64_t off_count(TextCursor& c, const char* what) {
 
 }  // namespace
 
-void read_off(std::span<const char> bytes, const std::string& name, Mesh& mesh,
-              MeshSource& source) {
+void read_off(std::span<const char> bytes, const std::string& name, Mesh& mesh, MeshSource& source,
+              bool release_pages) {
   TextCursor c(bytes, name);
+  PageRelease release(bytes.data(), release_pages);
   source.format = MeshFormat::off;
   skip_to_record(c);
   const char* kat = c.p;
@@ -67,6 +69,7 @@ void read_off(std::span<const char> bytes, const std::string& name, Mesh& mesh,
   const auto remaining = [&] { return static_cast<std::size_t>(c.end - c.p); };
   mesh.vertices.reserve(bounded_reserve(nv, remaining(), 6));  // "0 0 0\n" is the shortest vertex
   for (std::uint64_t i = 0; i < nv; ++i) {
+    release.passed(c.p);
     skip_to_record(c);
     if (c.at_end())
       c.fail(c.p, "unexpected end of file: " + std::to_string(i) + " of " + std::to_string(nv) +
@@ -81,6 +84,7 @@ void read_off(std::span<const char> bytes, const std::string& name, Mesh& mesh,
   mesh.face_offsets.reserve(bounded_reserve(nf, remaining(), 8) + 1);  // "3 0 1 2\n"
   mesh.corners.reserve(3 * bounded_reserve(nf, remaining(), 8));
   for (std::uint64_t f = 0; f < nf; ++f) {
+    release.passed(c.p);
     skip_to_record(c);
     const char* at = c.p;
     if (c.at_end())

@@ -10,6 +10,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "page_release.hpp"
 #include "pgamesh/input_error.hpp"
 #include "readers.hpp"
 #include "text_cursor.hpp"
@@ -297,7 +298,8 @@ std::string item_name(const PlyElement& el, std::uint64_t i) {
   return el.name + " " + std::to_string(i);
 }
 
-void read_binary(const Header& h, const Layout& l, const TextCursor& c, Mesh& mesh) {
+void read_binary(const Header& h, const Layout& l, const TextCursor& c, Mesh& mesh,
+                 PageRelease& release) {
   const bool data_big = h.format == MeshFormat::ply_binary_be;
   const bool swap = data_big != (std::endian::native == std::endian::big);
   BinaryReader r(c.begin, h.data, c.end, c.name, swap);
@@ -323,6 +325,7 @@ void read_binary(const Header& h, const Layout& l, const TextCursor& c, Mesh& me
                          std::to_string(r.remaining()) + " left");
       mesh.vertices.reserve(bounded_reserve(el.count, r.remaining(), fixed ? stride : 1));
       for (std::uint64_t i = 0; i < el.count; ++i) {
+        release.passed(r.p_);
         Vec3d v;
         if (fixed) {
           for (int k = 0; k < 3; ++k) {
@@ -355,6 +358,7 @@ void read_binary(const Header& h, const Layout& l, const TextCursor& c, Mesh& me
       mesh.face_offsets.reserve(bounded_reserve(el.count, r.remaining(), min_face) + 1);
       mesh.corners.reserve(3 * bounded_reserve(el.count, r.remaining(), min_face));
       for (std::uint64_t i = 0; i < el.count; ++i) {
+        release.passed(r.p_);
         for (std::size_t p = 0; p < el.props.size(); ++p) {
           if (static_cast<int>(p) != l.indices) {
             r.skip_property(el.props[p], item_name(el, i));
@@ -414,7 +418,7 @@ void ascii_skip_property(TextCursor& c, const PlyProperty& prop) {
   for (std::int64_t k = 0; k < n; ++k) ascii_value(c, prop.type, "a list entry");
 }
 
-void read_ascii(const Header& h, const Layout& l, TextCursor& c, Mesh& mesh) {
+void read_ascii(const Header& h, const Layout& l, TextCursor& c, Mesh& mesh, PageRelease& release) {
   c.p = h.data;
   const std::uint64_t nverts =
       l.vertex_element >= 0 ? h.elements[static_cast<std::size_t>(l.vertex_element)].count : 0;
@@ -425,6 +429,7 @@ void read_ascii(const Header& h, const Layout& l, TextCursor& c, Mesh& mesh) {
     if (static_cast<int>(e) == l.vertex_element) {
       mesh.vertices.reserve(bounded_reserve(el.count, remaining(), 2 * el.props.size()));
       for (std::uint64_t i = 0; i < el.count; ++i) {
+        release.passed(c.p);
         Vec3d v;
         for (std::size_t p = 0; p < el.props.size(); ++p) {
           int role = -1;
@@ -444,6 +449,7 @@ void read_ascii(const Header& h, const Layout& l, TextCursor& c, Mesh& mesh) {
       mesh.face_offsets.reserve(bounded_reserve(el.count, remaining(), 8) + 1);
       mesh.corners.reserve(3 * bounded_reserve(el.count, remaining(), 8));
       for (std::uint64_t i = 0; i < el.count; ++i) {
+        release.passed(c.p);
         for (std::size_t p = 0; p < el.props.size(); ++p) {
           if (static_cast<int>(p) != l.indices) {
             ascii_skip_property(c, el.props[p]);
@@ -481,9 +487,10 @@ void read_ascii(const Header& h, const Layout& l, TextCursor& c, Mesh& mesh) {
 
 }  // namespace
 
-void read_ply(std::span<const char> bytes, const std::string& name, Mesh& mesh,
-              MeshSource& source) {
+void read_ply(std::span<const char> bytes, const std::string& name, Mesh& mesh, MeshSource& source,
+              bool release_pages) {
   TextCursor c(bytes, name);
+  PageRelease release(bytes.data(), release_pages);
   const Header h = parse_header(c);
   const Layout l = find_layout(h, c);
   source.format = h.format;
@@ -498,9 +505,9 @@ void read_ply(std::span<const char> bytes, const std::string& name, Mesh& mesh,
       source.warnings.push_back(name + ": PLY element '" + el.name + "' (" +
                                 std::to_string(el.count) + " items) ignored");
   if (h.format == MeshFormat::ply_ascii)
-    read_ascii(h, l, c, mesh);
+    read_ascii(h, l, c, mesh, release);
   else
-    read_binary(h, l, c, mesh);
+    read_binary(h, l, c, mesh, release);
 }
 
 }  // namespace pgamesh::detail

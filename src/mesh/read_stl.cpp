@@ -2,6 +2,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "page_release.hpp"
 #include "pgamesh/input_error.hpp"
 #include "pgamesh/mesh/read_mesh.hpp"
 #include "pgamesh/mesh/stl_binary.hpp"
@@ -56,7 +57,7 @@ void check_binary_stl_finite(const BinaryStlView& view, const std::string& name)
 namespace detail {
 
 void read_stl_binary(std::span<const char> bytes, const std::string& name, Mesh& mesh,
-                     MeshSource& source) {
+                     MeshSource& source, bool release_pages) {
   const BinaryStlView view = *binary_stl_view(bytes, name);
   if (3 * view.count > max_vertices)
     throw InputError(name, byte_position(80),
@@ -68,7 +69,9 @@ void read_stl_binary(std::span<const char> bytes, const std::string& name, Mesh&
   mesh.vertices.resize(3 * n);  // the file size has proven the count
   mesh.corners.resize(3 * n);
   mesh.face_offsets.resize(n + 1);
+  PageRelease release(view.records, release_pages);
   for (std::size_t i = 0; i < n; ++i) {
+    release.passed(view.records + stl_record_bytes * i);
     stl_triangle(view.records + stl_record_bytes * i, &mesh.vertices[3 * i]);
     for (std::size_t k = 0; k < 3; ++k)
       mesh.corners[3 * i + k] = static_cast<std::uint32_t>(3 * i + k);
@@ -80,8 +83,9 @@ void read_stl_binary(std::span<const char> bytes, const std::string& name, Mesh&
 // / endsolid NAME, keywords case-insensitive, several solids in a row allowed. Normals are skipped
 // unread (NaN normals of degenerate facets are common and harmless).
 void read_stl_ascii(std::span<const char> bytes, const std::string& name, Mesh& mesh,
-                    MeshSource& source) {
+                    MeshSource& source, bool release_pages) {
   TextCursor c(bytes, name);
+  PageRelease release(bytes.data(), release_pages);
   source.format = MeshFormat::stl_ascii;
   // Typical exporters write 180-250 bytes a facet; reserve for 120 so that the arrays are never
   // reallocated (a copy that would double the peak). Unused reserve is untouched virtual memory.
@@ -103,6 +107,7 @@ void read_stl_ascii(std::span<const char> bytes, const std::string& name, Mesh& 
   std::uint64_t polygons = 0;
   const char* first_polygon = nullptr;
   for (;;) {
+    release.passed(c.p);
     c.skip_space();
     if (c.at_end()) break;
     const char* at = c.p;

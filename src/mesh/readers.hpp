@@ -1,5 +1,7 @@
 // Internal: one parser per format family, called by read_mesh_bytes() after detection. Each fills
-// an empty Mesh and the MeshSource fields it knows (format, precision, groups, warnings).
+// an empty Mesh and the MeshSource fields it knows (format, precision, groups, warnings). With
+// `release_pages` (bytes of a read-only file mapping only) each gives the pages it has passed back
+// to the kernel as it goes (page_release.hpp).
 #pragma once
 
 #include <span>
@@ -10,12 +12,15 @@
 namespace pgamesh::detail {
 
 void read_stl_binary(std::span<const char> bytes, const std::string& name, Mesh& mesh,
-                     MeshSource& source);
+                     MeshSource& source, bool release_pages = false);
 void read_stl_ascii(std::span<const char> bytes, const std::string& name, Mesh& mesh,
-                    MeshSource& source);
-void read_obj(std::span<const char> bytes, const std::string& name, Mesh& mesh, MeshSource& source);
-void read_ply(std::span<const char> bytes, const std::string& name, Mesh& mesh, MeshSource& source);
-void read_off(std::span<const char> bytes, const std::string& name, Mesh& mesh, MeshSource& source);
+                    MeshSource& source, bool release_pages = false);
+void read_obj(std::span<const char> bytes, const std::string& name, Mesh& mesh, MeshSource& source,
+              bool release_pages = false);
+void read_ply(std::span<const char> bytes, const std::string& name, Mesh& mesh, MeshSource& source,
+              bool release_pages = false);
+void read_off(std::span<const char> bytes, const std::string& name, Mesh& mesh, MeshSource& source,
+              bool release_pages = false);
 
 // A vertex count that fits the 32-bit corner indices of Mesh, or an error at `where`.
 inline constexpr std::uint64_t max_vertices = 0xFFFFFFFFull;

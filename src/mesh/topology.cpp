@@ -39,6 +39,16 @@ TopologyReport analyze_topology(const Mesh& mesh, const TopologyOptions& options
   return analyze_welded_triangles(welded, reference_point(mesh), options);
 }
 
+TopologyReport analyze_topology(Mesh&& mesh, const TopologyOptions& options) {
+  detail::check_topology_options(options);
+  check_mesh_structure(mesh);
+  if (!all_triangles(mesh)) return analyze_polygon_topology(mesh, options);
+  const Vec3d reference = reference_point(mesh);
+  const WeldedTriangles welded = weld_triangles(mesh, options.weld_tolerance);
+  mesh = Mesh{};  // the welded triangles hold everything the triangle pass reads
+  return analyze_welded_triangles(welded, reference, options);
+}
+
 TopologyReport analyze_polygon_topology(const Mesh& mesh, const TopologyOptions& options) {
   detail::check_topology_options(options);
   check_mesh_structure(mesh);

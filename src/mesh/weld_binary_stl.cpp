@@ -1,9 +1,6 @@
 // The exact weld of a binary STL straight from its records (welded_triangles.hpp): the 96-bit
 // pattern of each float32 triple is the key of an open-addressing hash table, so no Mesh of
 // doubles is built and every record is read once.
-#include <sys/mman.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <array>
 #include <bit>
@@ -11,6 +8,7 @@
 #include <exception>
 #include <thread>
 
+#include "page_release.hpp"
 #include "pgamesh/input_error.hpp"
 #include "pgamesh/mesh/welded_triangles.hpp"
 #include "weld_table.hpp"
@@ -20,6 +18,7 @@ namespace pgamesh {
 namespace {
 
 using detail::mix64;
+using detail::release_pages;
 
 using Key = std::array<std::uint32_t, 3>;
 
@@ -61,14 +60,6 @@ struct RecordTraits {
   static bool same(const Key& a, const Key& b) { return folded(a) == folded(b); }
 };
 using KeyTable = detail::WeldTable<Key, RecordTraits>;
-
-// Gives the pages of [from, to) back to the kernel, page-aligned inwards.
-void release_pages(const unsigned char* from, const unsigned char* to) {
-  const auto page = static_cast<std::uintptr_t>(sysconf(_SC_PAGESIZE));
-  const std::uintptr_t begin = (reinterpret_cast<std::uintptr_t>(from) + page - 1) & ~(page - 1);
-  const std::uintptr_t end = reinterpret_cast<std::uintptr_t>(to) & ~(page - 1);
-  if (end > begin) madvise(reinterpret_cast<void*>(begin), end - begin, MADV_DONTNEED);
-}
 
 // The weld of input vertices [first, last) into their own table: corners[i − first] gets the id
 // among this range's classes (numbered by first occurrence), first_vertex[id] the input index of

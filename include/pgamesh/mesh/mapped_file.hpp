@@ -27,6 +27,9 @@ class MappedFile {
   std::span<const char> bytes() const { return {data_, size_}; }
   // The path given to open().
   const std::string& path() const { return path_; }
+  // Whether bytes() is a read-only file mapping (whose pages may be released with madvise
+  // MADV_DONTNEED and are read back from the file when touched again), not a buffer of our own.
+  bool mapped() const { return mapped_; }
 
  private:
   void release() noexcept;

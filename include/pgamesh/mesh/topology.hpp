@@ -111,6 +111,11 @@ struct TopologyReport {
 // below; both give the same report.
 TopologyReport analyze_topology(const Mesh& mesh, const TopologyOptions& options = {});
 
+// The same report from a mesh the caller no longer needs: a mesh of triangles is welded and its
+// arrays are freed before the triangle pass allocates its own, so the two never coexist at the
+// peak (the polygon pass reads the mesh throughout and keeps it).
+TopologyReport analyze_topology(Mesh&& mesh, const TopologyOptions& options = {});
+
 // The pass for faces of any size: weld_map, build_edges, face_components, duplicated_faces and
 // boundary_loops, each over the whole mesh.
 TopologyReport analyze_polygon_topology(const Mesh& mesh, const TopologyOptions& options = {});
