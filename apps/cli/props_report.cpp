@@ -93,7 +93,7 @@ PropsReport props_of(std::span<const char> bytes, const std::string& name,
       r.density_from_mass = options.mass.mass.has_value();
       if (!options.topology) {
         r.streamed = true;
-        r.mass = binary_stl_mass_properties(*view, name, options.mass);
+        r.mass = binary_stl_mass_properties(*view, name, options.mass, release_records);
       } else {
         const WeldedTriangles welded = weld_binary_stl(*view, name, release_records);
         const Vec3d reference = bounding_box(welded.positions).centre();  // reference_point()
@@ -108,7 +108,7 @@ PropsReport props_of(std::span<const char> bytes, const std::string& name,
     // (polygons, errors) goes to the careful reader below.
     if (!options.topology &&
         (options.format != MeshFormat::unknown || detect_format(bytes) == MeshFormat::stl_ascii)) {
-      if (auto mass = ascii_stl_mass_properties(bytes, name, options.mass)) {
+      if (auto mass = ascii_stl_mass_properties(bytes, name, options.mass, release_records)) {
         PropsReport r;
         r.file = name;
         r.format = MeshFormat::stl_ascii;

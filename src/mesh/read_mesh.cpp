@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <cstring>
 
+#include "page_release.hpp"
 #include "pgamesh/input_error.hpp"
 #include "pgamesh/mesh/mapped_file.hpp"
 #include "pgamesh/mesh/stl_binary.hpp"
@@ -139,6 +140,8 @@ Mesh read_mesh_bytes(std::span<const char> bytes, const std::string& name, MeshS
     throw InputError(name, detail::text_position(bytes.data(), bytes.data()),
                      "unrecognised mesh format (expected STL, OBJ, PLY or OFF content)");
   }
+  // The readers release in steps as they go; the last step and the first page (detection) too.
+  if (release_pages) detail::release_pages(bytes.data(), bytes.data() + bytes.size());
   return mesh;
 }
 

@@ -38,9 +38,12 @@ void read_obj(std::span<const char> bytes, const std::string& name, Mesh& mesh, 
   TextCursor c(bytes, name);
   PageRelease release(bytes.data(), release_pages);
   source.format = MeshFormat::obj;
-  mesh.vertices.reserve(bytes.size() / 64);  // estimates only; vectors grow past them
-  mesh.corners.reserve(bytes.size() / 16);
-  mesh.face_offsets.reserve(bytes.size() / 64 + 1);
+  // Estimates only (vectors grow past them), generous because growing copies the array (a peak of
+  // old and new side by side) while untouched reserve is virtual memory only: a corner takes at
+  // least 2 bytes ("1 "), a typical one 7 or more; a face at least 8 ("f 1 2 3\n"), typically 20.
+  mesh.vertices.reserve(bytes.size() / 64);
+  mesh.corners.reserve(bytes.size() / 6);
+  mesh.face_offsets.reserve(bytes.size() / 16 + 1);
 
   // Positive indices may refer to vertices defined later in the file; the largest one is checked
   // against the final vertex count, reported at its own position.

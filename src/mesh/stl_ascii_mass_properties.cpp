@@ -8,6 +8,7 @@
 #include <thread>
 #include <vector>
 
+#include "page_release.hpp"
 #include "pgamesh/geometry/chunked_sums.hpp"
 #include "pgamesh/mesh/read_mesh.hpp"
 #include "readers.hpp"
@@ -135,11 +136,15 @@ const char* next_facet_line(const char* from, const char* end) {
 }
 
 // Piece boundaries: every piece but the first starts at a 'facet' line, the first at or after
-// (first + k × piece bytes). They depend on the bytes only, never on the thread count.
-std::vector<const char*> piece_starts(const char* first, const char* end) {
+// (first + k × piece bytes). They depend on the bytes only, never on the thread count. With
+// `release_pages`, the pages looked at are given back as the search passes them (as in
+// vertex_box).
+std::vector<const char*> piece_starts(const char* first, const char* end, bool release_pages) {
   std::vector<const char*> starts{first};
   const char* scan = first;
+  detail::PageRelease release(first, release_pages);
   for (std::size_t k = 1;; ++k) {
+    release.passed(scan);
     const auto offset = k * stl_ascii_piece_bytes;
     if (offset >= static_cast<std::size_t>(end - first)) break;
     const char* target = first + offset;
@@ -157,8 +162,10 @@ std::vector<const char*> piece_starts(const char* first, const char* end) {
 // The bounding box of the vertex lines of the text: of all of them in a file of at most one piece
 // (so that a small file is summed about the same point as reference_point() of its mesh), else of
 // those starting the lines after evenly spaced offsets. Lines that do not parse are skipped here;
-// the summing pass judges them.
-Box3 vertex_box(const char* begin, const char* end) {
+// the summing pass judges them. With `release_pages`, the pages sampled are given back as the
+// samples pass (a fault maps a whole folio of the page cache around the sampled line, so the
+// samples of a large file would otherwise map all of it).
+Box3 vertex_box(const char* begin, const char* end, bool release_pages) {
   Box3 box;
   auto add_line = [&](const char* p) {
     Vec3d v;
@@ -171,8 +178,10 @@ Box3 vertex_box(const char* begin, const char* end) {
     // Each sample looks for its line start before the next sample's offset only: a file without
     // newlines costs one pass, not one per sample.
     const std::size_t step = size / reference_samples;
+    detail::PageRelease release(begin, release_pages);
     for (std::size_t i = 0; i < reference_samples; ++i) {
       const char* p = begin + step * i;
+      release.passed(p);
       const void* nl = std::memchr(p, '\n', step);
       if (nl) add_line(static_cast<const char*>(nl) + 1);
     }
@@ -184,28 +193,33 @@ Box3 vertex_box(const char* begin, const char* end) {
 
 std::optional<MassProperties> ascii_stl_mass_properties(std::span<const char> bytes,
                                                         const std::string& name,
-                                                        const MassOptions& options) {
+                                                        const MassOptions& options,
+                                                        bool release_pages) {
   // What read_mesh_bytes() would not read as ASCII STL — e.g. text with a control byte in its
   // first KiB, which it takes for a broken binary STL — is not ours to read either.
   if (detect_format(bytes) != MeshFormat::stl_ascii) return std::nullopt;
   const char* first = bytes.data();
   const char* end = first + bytes.size();
   if (bytes.size() >= 3 && std::memcmp(first, "\xEF\xBB\xBF", 3) == 0) first += 3;  // BOM
-  const Vec3d ref = vertex_box(first, end).centre();
+  const Vec3d ref = vertex_box(first, end, release_pages).centre();
 
-  const std::vector<const char*> starts = piece_starts(first, end);
+  const std::vector<const char*> starts = piece_starts(first, end, release_pages);
   const std::size_t pieces = starts.size() - 1;
+  if (release_pages) detail::release_pages(bytes.data(), end);  // the last samples and searches
   std::vector<PieceSums> piece(pieces);
   std::atomic<std::size_t> next{0};
   auto work = [&] {
-    for (std::size_t k; (k = next.fetch_add(1, std::memory_order_relaxed)) < pieces;)
+    for (std::size_t k; (k = next.fetch_add(1, std::memory_order_relaxed)) < pieces;) {
       sum_piece(starts[k], starts[k + 1], k > 0, ref, piece[k]);  // the header opens piece 0
+      if (release_pages) detail::release_pages(starts[k], starts[k + 1]);
+    }
   };
   const std::size_t workers = std::min<std::size_t>(resolve_threads(options.threads), pieces);
   std::vector<std::thread> pool;
   for (std::size_t t = 1; t < workers; ++t) pool.emplace_back(work);
   work();
   for (auto& t : pool) t.join();
+  if (release_pages) detail::release_pages(bytes.data(), end);  // the pieces' shared edge pages
 
   // In file order: every later piece starts at a facet, so the one before must end inside a solid.
   BoundarySums total;

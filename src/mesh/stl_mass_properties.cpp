@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "page_release.hpp"
 #include "pgamesh/geometry/chunked_sums.hpp"
 
 namespace pgamesh {
@@ -9,11 +10,15 @@ namespace pgamesh {
 namespace {
 
 // The bounding box of evenly spaced records: cheap, deterministic, and close enough to the whole
-// box for placing the reference point and judging float32 precision.
-Box3 sampled_box(const BinaryStlView& view) {
+// box for placing the reference point and judging float32 precision. With `release_records`, the
+// sampled pages are given back as the samples pass (a fault maps a whole folio of the page cache
+// around each sample, so the samples of a large file would otherwise map all of it).
+Box3 sampled_box(const BinaryStlView& view, bool release_records) {
   Box3 box;
   const std::uint64_t step = std::max<std::uint64_t>(1, view.count / stl_reference_samples);
+  detail::PageRelease release(view.records, release_records);
   for (std::uint64_t i = 0; i < view.count; i += step) {
+    release.passed(view.records + stl_record_bytes * i);
     Vec3d v[3];
     stl_triangle(view.records + stl_record_bytes * i, v);
     for (const Vec3d& p : v)
@@ -32,8 +37,10 @@ bool finite(const BoundarySums& s) {
 }  // namespace
 
 MassProperties binary_stl_mass_properties(const BinaryStlView& view, const std::string& name,
-                                          const MassOptions& options) {
-  const Box3 box = sampled_box(view);
+                                          const MassOptions& options, bool release_records) {
+  const Box3 box = sampled_box(view, release_records);
+  const unsigned char* records_end = view.records + stl_record_bytes * view.count;
+  if (release_records) detail::release_pages(view.records, records_end);
   const Vec3d ref = box.centre();
   const BoundarySums total = chunked_sums(
       view.count, options.threads, [&](BoundarySums& s, std::size_t begin, std::size_t end) {
@@ -43,7 +50,11 @@ MassProperties binary_stl_mass_properties(const BinaryStlView& view, const std::
           stl_triangle(r, v);
           add_triangle(s, v[0] - ref, v[1] - ref, v[2] - ref);
         }
+        if (release_records)
+          detail::release_pages(view.records + stl_record_bytes * begin,
+                                view.records + stl_record_bytes * end);
       });
+  if (release_records) detail::release_pages(view.records, records_end);  // chunks' shared pages
   // A NaN or infinity anywhere poisons the sums: name the first culprit (throws).
   if (!finite(total)) check_binary_stl_finite(view, name);
   MassProperties p = mass_properties_from_sums(total, ref, options);

@@ -44,8 +44,8 @@ TopologyReport analyze_topology(Mesh&& mesh, const TopologyOptions& options) {
   check_mesh_structure(mesh);
   if (!all_triangles(mesh)) return analyze_polygon_topology(mesh, options);
   const Vec3d reference = reference_point(mesh);
-  const WeldedTriangles welded = weld_triangles(mesh, options.weld_tolerance);
-  mesh = Mesh{};  // the welded triangles hold everything the triangle pass reads
+  // Welded in the mesh's own arrays: the welded triangles hold everything the triangle pass reads.
+  const WeldedTriangles welded = weld_triangles(std::move(mesh), options.weld_tolerance);
   return analyze_welded_triangles(welded, reference, options);
 }
 

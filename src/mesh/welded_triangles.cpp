@@ -17,12 +17,20 @@ bool all_triangles(const Mesh& mesh) {
   return true;
 }
 
-WeldedTriangles weld_triangles(const Mesh& mesh, double tolerance) {
+namespace {
+
+void check_triangles(const Mesh& mesh) {
   if (!all_triangles(mesh)) throw std::invalid_argument("weld_triangles: a face is not a triangle");
   for (std::uint32_t c : mesh.corners)
     if (c >= mesh.vertices.size())
       throw std::out_of_range("weld: corner index " + std::to_string(c) + " out of range (" +
                               std::to_string(mesh.vertices.size()) + " vertices)");
+}
+
+}  // namespace
+
+WeldedTriangles weld_triangles(const Mesh& mesh, double tolerance) {
+  check_triangles(mesh);
   WeldMap map = weld_map(mesh.vertices, tolerance);
   WeldedTriangles w;
   w.input_vertices = mesh.vertices.size();
@@ -36,6 +44,34 @@ WeldedTriangles weld_triangles(const Mesh& mesh, double tolerance) {
   for (std::size_t c = 0; c < mesh.corners.size(); ++c)
     w.corners[c] = map.to_welded[mesh.corners[c]];
   w.representative = std::move(map.representative);
+  return w;
+}
+
+WeldedTriangles weld_triangles(Mesh&& mesh, double tolerance) {
+  check_triangles(mesh);
+  std::vector<std::uint32_t>().swap(mesh.face_offsets);  // all triangles: the offsets say nothing
+  WeldMap map = weld_map(mesh.vertices, tolerance);
+  WeldedTriangles w;
+  w.input_vertices = mesh.vertices.size();
+  w.merged = map.merged;
+  w.max_moved = map.max_moved;
+  w.tolerance = map.tolerance;
+  // Corners renumbered in place; then the positions compacted in place: welded vertices are
+  // numbered in the order of their representatives (weld.hpp), so representative[i] ≥ i and each
+  // move reads a vertex that no earlier move has overwritten.
+  for (std::uint32_t& c : mesh.corners) c = map.to_welded[c];
+  std::vector<std::uint32_t>().swap(map.to_welded);
+  w.corners = std::move(mesh.corners);
+  std::vector<Vec3d>& v = mesh.vertices;
+  const std::size_t count = map.welded_count();
+  for (std::size_t i = 0; i < count; ++i) v[i] = v[map.representative[i]];
+  if (count < v.size()) {
+    v.resize(count);
+    v.shrink_to_fit();
+  }
+  w.positions = std::move(v);
+  w.representative = std::move(map.representative);
+  mesh = Mesh{};
   return w;
 }
 

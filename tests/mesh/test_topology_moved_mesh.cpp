@@ -8,6 +8,7 @@
 
 #include "pgamesh/mesh/read_mesh.hpp"
 #include "pgamesh/mesh/topology.hpp"
+#include "pgamesh/mesh/welded_triangles.hpp"
 #include "support/read_helpers.hpp"
 #include "support/solids.hpp"
 #include "topology_test_meshes.hpp"
@@ -110,6 +111,45 @@ TopologyReport expect_same_topology(const Mesh& mesh, const TopologyOptions& opt
   const TopologyReport moved = analyze_topology(std::move(copy), options);
   expect_same_report(moved, kept);
   return moved;
+}
+
+// weld_triangles on a moved mesh (corners renumbered and positions compacted in place) against
+// the copying weld.
+void expect_same_weld(const Mesh& mesh, double tolerance) {
+  const WeldedTriangles kept = weld_triangles(mesh, tolerance);
+  Mesh copy = mesh;
+  const WeldedTriangles moved = weld_triangles(std::move(copy), tolerance);
+  EXPECT_TRUE(copy.vertices.empty() && copy.corners.empty());
+  ASSERT_EQ(moved.positions.size(), kept.positions.size());
+  EXPECT_EQ(std::memcmp(moved.positions.data(), kept.positions.data(),
+                        kept.positions.size() * sizeof(Vec3d)),
+            0);
+  EXPECT_EQ(moved.corners, kept.corners);
+  EXPECT_EQ(moved.representative, kept.representative);
+  EXPECT_EQ(moved.input_vertices, kept.input_vertices);
+  EXPECT_EQ(moved.merged, kept.merged);
+  expect_bits(moved.max_moved, kept.max_moved, "max_moved");
+  expect_bits(moved.tolerance, kept.tolerance, "tolerance");
+}
+
+TEST(TopologyMovedMesh, WeldInPlace) {
+  const Mesh sphere = test::triangulated(test::uv_sphere(2, 20, 30));
+  expect_same_weld(sphere, 0);                  // nothing merges: positions kept as they are
+  expect_same_weld(test::unshared(sphere), 0);  // six corners a vertex: compacted
+  Mesh near = test::unshared(sphere);
+  for (std::size_t i = 0; i < near.vertices.size(); i += 3) near.vertices[i].y -= 1e-10;
+  expect_same_weld(near, 1e-8);
+  // −0 and +0 weld; the representative keeps its own sign.
+  Mesh zeros = test::unshared(test::unit_cube());
+  for (auto& v : zeros.vertices)
+    if (v.x == 0) v.x = -0.0;
+  zeros.vertices[0].x = 0.0;
+  expect_same_weld(zeros, 0);
+  Mesh quads = test::unit_cube_quads();
+  EXPECT_THROW(weld_triangles(std::move(quads)), std::invalid_argument);
+  Mesh bad = test::unit_cube();
+  bad.corners[4] = 8;
+  EXPECT_THROW(weld_triangles(std::move(bad)), std::out_of_range);
 }
 
 TEST(TopologyMovedMesh, TrianglesClosedOpenUnweldedFlippedDuplicated) {

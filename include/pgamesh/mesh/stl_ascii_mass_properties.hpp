@@ -28,9 +28,12 @@ inline constexpr std::size_t stl_ascii_piece_bytes = std::size_t{1} << 19;
 // (with `name`) when the last solid is not closed. Returns nullopt when the bytes are not an ASCII
 // STL of plain triangular facets (see above), or not detected as ASCII STL by detect_format(): read
 // them with read_mesh_bytes() instead. Never throws for bad input; std::invalid_argument for a
-// non-finite density or mass, as mass_properties_from_sums().
+// non-finite density or mass, as mass_properties_from_sums(). With `release_pages` — only for the
+// bytes of a read-only file mapping, as in read_mesh_bytes() — each piece's pages are given back
+// to the kernel once it is summed (a declined file is then read again from the page cache).
 std::optional<MassProperties> ascii_stl_mass_properties(std::span<const char> bytes,
                                                         const std::string& name,
-                                                        const MassOptions& options = {});
+                                                        const MassOptions& options = {},
+                                                        bool release_pages = false);
 
 }  // namespace pgamesh

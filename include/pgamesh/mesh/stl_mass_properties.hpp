@@ -19,8 +19,11 @@ inline constexpr std::uint64_t stl_reference_samples = 4096;
 // Mass properties of the triangles of a binary STL view, accumulated about the centre of a sample
 // of its records. Fills faces = triangles = view.count and vertices = 3 × count (STL vertices are
 // not shared). Adds the float32 far-from-origin warning when it applies. Throws InputError naming
-// `name` and the byte offset of the first non-finite coordinate when there is one.
+// `name` and the byte offset of the first non-finite coordinate when there is one. With
+// `release_records` — only for records in a read-only file mapping — the pages of the records are
+// given back to the kernel as they are summed (madvise MADV_DONTNEED; they stay readable).
 MassProperties binary_stl_mass_properties(const BinaryStlView& view, const std::string& name,
-                                          const MassOptions& options = {});
+                                          const MassOptions& options = {},
+                                          bool release_records = false);
 
 }  // namespace pgamesh

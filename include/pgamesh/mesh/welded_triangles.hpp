@@ -37,6 +37,11 @@ bool all_triangles(const Mesh& mesh);
 // beyond the vertex list.
 WeldedTriangles weld_triangles(const Mesh& mesh, double tolerance = 0);
 
+// The same weld of a mesh the caller no longer needs, built in its arrays: the corners are
+// renumbered in place and the positions compacted in place, so the weld needs no second copy of
+// either (the mesh is left empty). Same results and exceptions as above.
+WeldedTriangles weld_triangles(Mesh&& mesh, double tolerance = 0);
+
 // Welds the records of a binary STL exactly: input vertex 3 i + k is vertex k of record i (the
 // numbering read_mesh gives), and vertices merge when their float32 bit patterns are equal, −0
 // folded to +0 — the same classes, numbering and representatives as weld_map on the read mesh.
