@@ -37,21 +37,35 @@ inline std::uint64_t hash_of(const Key& k) {
   return mix64(k.x ^ mix64(k.y ^ mix64(k.z + 0x9e3779b97f4a7c15ULL)));
 }
 
+// The table's keys are the classes' first vertices, compared by their folded bits.
 struct ExactTraits {
-  static std::uint64_t hash(const Key& k) { return hash_of(k); }
-  static bool same(const Key& a, const Key& b) { return a == b; }
+  static std::uint64_t hash(const Vec3d& v) { return hash_of(key_of(v)); }
+  static bool same(const Vec3d& a, const Vec3d& b) { return key_of(a) == key_of(b); }
 };
-using ExactTable = detail::WeldTable<Key, ExactTraits>;
+using ExactTable = detail::WeldTable<Vec3d, ExactTraits>;
 
-WeldMap weld_exact(std::span<const Vec3d> v) {
+// The keys kept in the input's own array: the key of class id (the coordinates of its first
+// vertex) is written over vertex id. Classes are numbered in order of their first vertex, so id is
+// at most the vertex being welded and every vertex still to be read lies beyond it; the array ends
+// holding the welded positions.
+struct KeysInPlace {
+  Vec3d* data;
+  std::size_t count = 0;
+  std::size_t size() const { return count; }
+  const Vec3d& operator[](std::size_t id) const { return data[id]; }
+  void push_back(const Vec3d& v) { data[count++] = v; }
+};
+
+// The exact weld of `v`, the classes' first vertices appended to `keys` (a std::vector<Vec3d> or
+// KeysInPlace over v itself).
+template <class Keys>
+WeldMap weld_exact(std::span<const Vec3d> v, Keys& keys) {
   WeldMap out;
   const std::size_t n = v.size();
   out.to_welded.resize(n);
   // Meshes read from STL share each vertex among about six corners: start the table for n / 4
   // classes and let it grow, so the common case touches a table that is 4× smaller.
   ExactTable table(n / 4 + 16);
-  std::vector<Key> keys;
-  keys.reserve(n / 4 + 16);
   out.representative.reserve(n / 4 + 16);
 
   // The table is far larger than the caches; hashing a few vertices ahead and prefetching their
@@ -66,7 +80,7 @@ WeldMap weld_exact(std::span<const Vec3d> v) {
       __builtin_prefetch(table.slot_address(h));
     }
     bool inserted = false;
-    const std::uint32_t id = table.find_or_insert(key_of(v[i]), ring[i & 31], keys, inserted);
+    const std::uint32_t id = table.find_or_insert(v[i], ring[i & 31], keys, inserted);
     out.to_welded[i] = id;
     if (inserted) out.representative.push_back(static_cast<std::uint32_t>(i));
   }
@@ -146,7 +160,32 @@ WeldMap weld_map(std::span<const Vec3d> vertices, double tolerance) {
     throw std::invalid_argument("weld tolerance must be a finite number >= 0");
   if (vertices.size() >= std::numeric_limits<std::uint32_t>::max())
     throw std::length_error("weld: more than 2^32 - 2 vertices");
-  return tolerance == 0 ? weld_exact(vertices) : weld_tolerance(vertices, tolerance);
+  if (tolerance != 0) return weld_tolerance(vertices, tolerance);
+  std::vector<Vec3d> keys;
+  keys.reserve(vertices.size() / 4 + 16);
+  return weld_exact(vertices, keys);
+}
+
+WeldMap weld_map_compacting(std::vector<Vec3d>& vertices, double tolerance) {
+  if (!(tolerance >= 0) || !std::isfinite(tolerance))
+    throw std::invalid_argument("weld tolerance must be a finite number >= 0");
+  if (vertices.size() >= std::numeric_limits<std::uint32_t>::max())
+    throw std::length_error("weld: more than 2^32 - 2 vertices");
+  WeldMap map;
+  if (tolerance == 0) {
+    KeysInPlace keys{vertices.data()};
+    map = weld_exact(vertices, keys);  // leaves the first vertex of every class at its id
+  } else {
+    map = weld_tolerance(vertices, tolerance);
+    // representative[id] ≥ id (numbered in order of first vertex): no move overwrites a source.
+    for (std::size_t id = 0; id < map.welded_count(); ++id)
+      vertices[id] = vertices[map.representative[id]];
+  }
+  if (map.welded_count() < vertices.size()) {
+    vertices.resize(map.welded_count());
+    vertices.shrink_to_fit();
+  }
+  return map;
 }
 
 WeldResult weld(const Mesh& mesh, double tolerance) {

@@ -22,7 +22,9 @@ inline std::uint64_t mix64(std::uint64_t h) {
 // Open addressing with linear probing over ids into a caller's key array. A slot holds
 // (upper 32 hash bits << 32) | (id + 1), 0 = empty: the tag rejects almost every non-matching
 // slot without touching the key array. Traits supplies `static std::uint64_t hash(const Key&)`
-// and `static bool same(const Key&, const Key&)` (the weld's notion of equal coordinates).
+// and `static bool same(const Key&, const Key&)` (the weld's notion of equal coordinates). The key
+// array is a std::vector<Key> or anything with its size(), operator[] and push_back (weld.cpp keeps
+// the keys in the input's own array, compacted as the classes appear).
 template <class Key, class Traits>
 class WeldTable {
  public:
@@ -39,7 +41,8 @@ class WeldTable {
   const std::uint64_t* slot_address(std::uint64_t h) const { return &slots_[h & mask_]; }
 
   // The id of `k` (hash h) among `keys`, or none.
-  std::uint32_t find(const Key& k, std::uint64_t h, const std::vector<Key>& keys) const {
+  template <class Keys>
+  std::uint32_t find(const Key& k, std::uint64_t h, const Keys& keys) const {
     const std::uint64_t tag = h >> 32;
     for (std::size_t pos = h & mask_;; pos = (pos + 1) & mask_) {
       const std::uint64_t s = slots_[pos];
@@ -52,8 +55,8 @@ class WeldTable {
   }
 
   // The id of `k` (hash h), appending it to `keys` when it is new (then `inserted` is true).
-  std::uint32_t find_or_insert(const Key& k, std::uint64_t h, std::vector<Key>& keys,
-                               bool& inserted) {
+  template <class Keys>
+  std::uint32_t find_or_insert(const Key& k, std::uint64_t h, Keys& keys, bool& inserted) {
     const std::uint64_t tag = h >> 32;
     for (std::size_t pos = h & mask_;; pos = (pos + 1) & mask_) {
       const std::uint64_t s = slots_[pos];
@@ -76,7 +79,8 @@ class WeldTable {
   }
 
  private:
-  void grow(const std::vector<Key>& keys) {
+  template <class Keys>
+  void grow(const Keys& keys) {
     std::vector<std::uint64_t> old(slots_.size() * 2, 0);
     old.swap(slots_);
     mask_ = slots_.size() - 1;

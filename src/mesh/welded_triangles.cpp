@@ -50,26 +50,16 @@ WeldedTriangles weld_triangles(const Mesh& mesh, double tolerance) {
 WeldedTriangles weld_triangles(Mesh&& mesh, double tolerance) {
   check_triangles(mesh);
   std::vector<std::uint32_t>().swap(mesh.face_offsets);  // all triangles: the offsets say nothing
-  WeldMap map = weld_map(mesh.vertices, tolerance);
   WeldedTriangles w;
   w.input_vertices = mesh.vertices.size();
+  WeldMap map = weld_map_compacting(mesh.vertices, tolerance);  // positions in place
   w.merged = map.merged;
   w.max_moved = map.max_moved;
   w.tolerance = map.tolerance;
-  // Corners renumbered in place; then the positions compacted in place: welded vertices are
-  // numbered in the order of their representatives (weld.hpp), so representative[i] ≥ i and each
-  // move reads a vertex that no earlier move has overwritten.
-  for (std::uint32_t& c : mesh.corners) c = map.to_welded[c];
+  for (std::uint32_t& c : mesh.corners) c = map.to_welded[c];  // corners renumbered in place
   std::vector<std::uint32_t>().swap(map.to_welded);
   w.corners = std::move(mesh.corners);
-  std::vector<Vec3d>& v = mesh.vertices;
-  const std::size_t count = map.welded_count();
-  for (std::size_t i = 0; i < count; ++i) v[i] = v[map.representative[i]];
-  if (count < v.size()) {
-    v.resize(count);
-    v.shrink_to_fit();
-  }
-  w.positions = std::move(v);
+  w.positions = std::move(mesh.vertices);
   w.representative = std::move(map.representative);
   mesh = Mesh{};
   return w;

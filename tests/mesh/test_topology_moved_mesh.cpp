@@ -3,11 +3,13 @@
 // duplicated, polygon and tolerance-welded meshes and on the real meshes of ../shared/meshes.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
 #include <string>
 
 #include "pgamesh/mesh/read_mesh.hpp"
 #include "pgamesh/mesh/topology.hpp"
+#include "pgamesh/mesh/weld.hpp"
 #include "pgamesh/mesh/welded_triangles.hpp"
 #include "support/read_helpers.hpp"
 #include "support/solids.hpp"
@@ -130,6 +132,29 @@ void expect_same_weld(const Mesh& mesh, double tolerance) {
   EXPECT_EQ(moved.merged, kept.merged);
   expect_bits(moved.max_moved, kept.max_moved, "max_moved");
   expect_bits(moved.tolerance, kept.tolerance, "tolerance");
+}
+
+TEST(TopologyMovedMesh, WeldMapCompactingEqualsWeldMap) {
+  std::vector<Vec3d> v = test::unshared(test::triangulated(test::uv_sphere(1, 8, 12))).vertices;
+  v.push_back({7, 7, 7});  // unreferenced, its own class
+  v.push_back({-0.0, 0.0, 5});
+  v.push_back({0.0, -0.0, 5});  // welds with the one before; the first keeps its −0
+  for (double tolerance : {0.0, 1e-9}) {
+    const WeldMap expected = weld_map(v, tolerance);
+    std::vector<Vec3d> compacted = v;
+    const WeldMap got = weld_map_compacting(compacted, tolerance);
+    EXPECT_EQ(got.to_welded, expected.to_welded);
+    EXPECT_EQ(got.representative, expected.representative);
+    EXPECT_EQ(got.merged, expected.merged);
+    expect_bits(got.max_moved, expected.max_moved, "max_moved");
+    ASSERT_EQ(compacted.size(), expected.welded_count());
+    for (std::size_t id = 0; id < compacted.size(); ++id)
+      expect_bits(compacted[id], v[expected.representative[id]], "welded position");
+    EXPECT_TRUE(std::signbit(compacted.back().x));
+  }
+  std::vector<Vec3d> none;
+  EXPECT_EQ(weld_map_compacting(none).welded_count(), 0u);
+  EXPECT_THROW(weld_map_compacting(none, -1), std::invalid_argument);
 }
 
 TEST(TopologyMovedMesh, WeldInPlace) {

@@ -37,6 +37,12 @@ struct WeldMap {
 // 2³² − 1 vertices.
 WeldMap weld_map(std::span<const Vec3d> vertices, double tolerance = 0);
 
+// weld_map, leaving `vertices` replaced by the welded positions (vertex i = the coordinates of
+// representative i). The exact weld keeps its hash keys in the array itself, compacting it as the
+// classes appear, so it needs no second array of coordinates (the peak of welding a large mesh).
+// Same results and exceptions as weld_map.
+WeldMap weld_map_compacting(std::vector<Vec3d>& vertices, double tolerance = 0);
+
 // A welded mesh: the representatives' coordinates as vertices, corners renumbered, faces unchanged
 // in number and order.
 struct WeldResult {
