@@ -172,6 +172,51 @@ void BM_Pgad4_GeometricFullFull(benchmark::State& s) {
 }
 BENCHMARK(BM_Pgad4_GeometricFullFull);
 
+// ---- exp and log of PGA R(d,0,1) motors: the closed forms in the angle sums against the series --
+
+template <int D>
+pgad::Multivector<D> random_pgad_bivector(std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(-0.5, 0.5);
+  pgad::Multivector<D> b{};
+  for (clifford::BladeMask m = 0; m < b.size; ++m)
+    if (clifford::grade_of(m) == 2) b.c[m] = u(rng);
+  return b;
+}
+
+template <int D>
+void BM_PgadExpClosedForm(benchmark::State& s) {
+  const auto b = random_pgad_bivector<D>(10);
+  for (auto _ : s) {
+    benchmark::DoNotOptimize(b);
+    benchmark::DoNotOptimize(pgad::exp(b));
+  }
+}
+BENCHMARK_TEMPLATE(BM_PgadExpClosedForm, 4);
+BENCHMARK_TEMPLATE(BM_PgadExpClosedForm, 7);
+
+template <int D>
+void BM_PgadExpSeries(benchmark::State& s) {
+  const auto b = random_pgad_bivector<D>(10);
+  for (auto _ : s) {
+    benchmark::DoNotOptimize(b);
+    benchmark::DoNotOptimize(pgad::exp_series(b));
+  }
+}
+BENCHMARK_TEMPLATE(BM_PgadExpSeries, 4);
+BENCHMARK_TEMPLATE(BM_PgadExpSeries, 7);
+
+template <int D>
+void BM_PgadLogClosedForm(benchmark::State& s) {
+  const auto m = pgad::exp(random_pgad_bivector<D>(11));
+  for (auto _ : s) {
+    benchmark::DoNotOptimize(m);
+    benchmark::DoNotOptimize(pgad::log(m));
+  }
+}
+BENCHMARK_TEMPLATE(BM_PgadLogClosedForm, 4);
+BENCHMARK_TEMPLATE(BM_PgadLogClosedForm, 7);
+
 }  // namespace
 
 BENCHMARK_MAIN();

@@ -384,11 +384,22 @@ Multivector exp(const Algebra& alg, const Multivector& a) {
     const Multivector ib = geometric(alg, pseudoscalar(alg), b);
     return es * (scalar(e.c0) + basis_blade(i_mask, e.cI) + e.cL * b + e.cIL * ib);
   }
-  // R(4,0,1), R(5,0,1): the invariant decomposition into commuting rotations and a translation.
+  // R(d,0,1), 4 ≤ d ≤ 7: pgad's closed form in the angle sums (commuting rotations, isoclinic or
+  // not, and a translation).
   if (only_grades(b, 1u << 2, max_abs_coeff(b))) {
-    const int d = pga_dimension(alg);
-    if (d == 4) return es * through_pgad<4>(b, [](const auto& x) { return pgad::exp(x); });
-    if (d == 5) return es * through_pgad<5>(b, [](const auto& x) { return pgad::exp(x); });
+    auto pgad_exp = [](const auto& x) { return pgad::exp(x); };
+    switch (pga_dimension(alg)) {
+      case 4:
+        return es * through_pgad<4>(b, pgad_exp);
+      case 5:
+        return es * through_pgad<5>(b, pgad_exp);
+      case 6:
+        return es * through_pgad<6>(b, pgad_exp);
+      case 7:
+        return es * through_pgad<7>(b, pgad_exp);
+      default:
+        break;
+    }
   }
   // Scaling and squaring: exp(B) = exp(B / 2^k)^(2^k) with |B / 2^k| ≤ ½, Taylor to round-off.
   int k = 0;
@@ -426,14 +437,24 @@ Multivector log(const Algebra& alg, const Multivector& a) {
     const StudyLog l = study_log(s, std::sqrt(e2), a[alg.pseudoscalar_mask()]);
     return l.cL * b + l.cIL * geometric(alg, pseudoscalar(alg), b);
   }
-  if (only_grades(a, 0b1010101u, scale)) {  // R(4,0,1), R(5,0,1): the invariant decomposition
-    const int d = pga_dimension(alg);
-    if (d == 4) return through_pgad<4>(a, [](const auto& x) { return pgad::log(x); });
-    if (d == 5) return through_pgad<5>(a, [](const auto& x) { return pgad::log(x); });
+  if (only_grades(a, 0b101010101u, scale)) {  // R(d,0,1), 4 ≤ d ≤ 7: pgad::log
+    auto pgad_log = [](const auto& x) { return pgad::log(x); };
+    switch (pga_dimension(alg)) {
+      case 4:
+        return through_pgad<4>(a, pgad_log);
+      case 5:
+        return through_pgad<5>(a, pgad_log);
+      case 6:
+        return through_pgad<6>(a, pgad_log);
+      case 7:
+        return through_pgad<7>(a, pgad_log);
+      default:
+        break;
+    }
   }
   throw std::domain_error(
       "log: defined here for rotors and motors s + B with B^2 a scalar, for R(3,0,1) motors and "
-      "for R(4,0,1), R(5,0,1) motors without isoclinic planes");
+      "for R(d,0,1) motors with 4 <= d <= 7");
 }
 
 Multivector sqrt(const Algebra& alg, const Multivector& a) {

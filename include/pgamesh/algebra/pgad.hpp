@@ -11,9 +11,13 @@
 #include <cmath>
 #include <cstddef>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "pgamesh/algebra/clifford/blade.hpp"
 #include "pgamesh/algebra/clifford/closed_forms.hpp"
+#include "pgamesh/algebra/clifford/divided_differences.hpp"
+#include "pgamesh/algebra/clifford/real_roots.hpp"
 
 namespace pgamesh::pgad {
 
@@ -358,15 +362,15 @@ bool only_grades(const Multivector<D>& a, unsigned allowed) {
 }  // namespace detail
 
 // ---- invariant decomposition (Roelfs & De Keninck, "Graded symmetry groups: plane and simple",
-// 2021): a bivector of R(d,0,1), d ≤ 5, is a sum of commuting simple bivectors — at most two
-// rotations F_j (F_j² = λ_j < 0, about orthogonal Euclidean planes) and one translation T (T² = 0)
-// — so exp and log have closed forms factor by factor.
+// 2021): a bivector of R(d,0,1), d ≤ 7, is a sum of commuting simple bivectors — at most three
+// rotations F_j (F_j² = λ_j = −μ_j < 0, about orthogonal Euclidean planes) and one translation T
+// (T² = 0) — so exp and log have closed forms.
 
 // The commuting simple parts of a bivector: B = Σ_j rotation[j] + translation.
 template <int D>
 struct BivectorSplit {
-  std::array<Multivector<D>, 2> rotation{};
-  std::array<double, 2> square{};  // λ_j = rotation[j]²
+  std::array<Multivector<D>, 3> rotation{};
+  std::array<double, 3> square{};  // λ_j = rotation[j]²
   int rotations = 0;
   Multivector<D> translation{};
 };
@@ -390,65 +394,226 @@ constexpr Multivector<D> e0_times(const Multivector<D>& t) {
   for (int i = 0; i < D; ++i) b.c[(BladeMask{2} << i) | 1u] = t.c[BladeMask{2} << i];
   return b;
 }
-// Projection of the Euclidean vector x onto the plane of the Euclidean bivector F (F² = λ < 0):
-// ⟨⟨x F⟩₁ F⟩₁ / λ.
-template <int D>
-Multivector<D> project_on_plane(const Multivector<D>& x, const Multivector<D>& f, double lambda) {
-  return (1.0 / lambda) * grade(geometric(grade(geometric(x, f), 1), f), 1);
-}
 
-// Relative gap below which two rotation planes count as isoclinic (equal λ): there the split is
-// not unique and the closed form F1 = (F W − λ1 F)/(λ2 − λ1) loses its digits.
+// Relative gap below which invariant_split calls two rotation planes isoclinic (equal angles):
+// there the planes are not unique and the Lagrange projectors onto them lose their digits.
 inline constexpr double isoclinic_gap = 1e-6;
 
-// Splits a Euclidean bivector of at most two planes, F = F1 + F2 with F_j² = λ_j: W = F ∧ F / 2
-// = F1 F2, so λ1 + λ2 = ⟨F²⟩₀, λ1 λ2 = ⟨W²⟩₀ and F W = λ2 F1 + λ1 F2, whence
-// F1 = (F W − λ1 F)/(λ2 − λ1) (the k = 2 case of the invariant decomposition). Returns the
-// number of planes (0, 1 or 2), or −1 when two planes are (nearly) isoclinic.
+// Elementary symmetric functions of the squared rotation angles μ_j = −λ_j of a bivector B with
+// B² = b2. With W = B ∧ B / 2 = Σ_(i<j) F_i F_j and T = B ∧ B ∧ B / 6 = B ∧ W / 3 = F1 F2 F3
+// (blades with e0 square to 0, so only the Euclidean parts reach a scalar part):
+// Σ μ_j = −⟨B²⟩₀, Σ_(i<j) μ_i μ_j = ⟨W²⟩₀ ((F_i F_j)² = λ_i λ_j) and μ1 μ2 μ3 = −⟨T²⟩₀
+// ((F1 F2 F3)² = λ1 λ2 λ3) — the coefficients of the invariant decomposition's characteristic
+// polynomial μ³ − e1 μ² + e2 μ − e3 (e3 = 0 for d ≤ 5: at most two planes).
+struct PlaneInvariants {
+  double e1, e2, e3;
+};
 template <int D>
-int split_euclidean(const Multivector<D>& f, std::array<Multivector<D>, 2>& parts,
-                    std::array<double, 2>& squares) {
-  const Multivector<D> f2 = geometric(f, f);
-  const Multivector<D> w = 0.5 * grade(f2, 4);
-  const double sum = f2.c[0];                   // λ1 + λ2 ≤ 0
-  const double product = geometric(w, w).c[0];  // λ1 λ2 ≥ 0
-  if (sum == 0) return 0;
-  if (std::abs(product) <= 1e-28 * sum * sum) {  // a single plane
-    parts = {f, Multivector<D>{}};
-    squares = {sum, 0.0};
-    return 1;
+PlaneInvariants plane_invariants(const Multivector<D>& b, const Multivector<D>& b2) {
+  const Multivector<D> w = 0.5 * grade(b2, 4);
+  PlaneInvariants p{-b2.c[0], geometric(w, w).c[0], 0.0};
+  if constexpr (D >= 6) {
+    const Multivector<D> t = (1.0 / 3) * outer(b, w);
+    p.e3 = -geometric(t, t).c[0];
   }
-  const double disc = std::max(sum * sum - 4 * product, 0.0);
-  const double l1 = 0.5 * (sum - std::sqrt(disc));  // the larger rotation, no cancellation
-  const double l2 = product / l1;
-  if (l2 - l1 <= isoclinic_gap * std::abs(l1)) return -1;
-  parts[0] = (1.0 / (l2 - l1)) * (grade(geometric(f, w), 2) - l1 * f);
-  parts[1] = f - parts[0];
-  squares = {l1, l2};
-  return 2;
+  return p;
+}
+
+// The squared angles μ1 ≥ μ2 ≥ μ3 ≥ 0, roots of μ³ − e1 μ² + e2 μ − e3 (all real, in [0, e1]):
+// the quadratic formula without cancellation when e3 = 0, else Viète's
+// (clifford::cubic_real_roots).
+inline std::array<double, 3> squared_angles(const PlaneInvariants& p) {
+  std::array<double, 3> mu{};
+  if (p.e1 <= 0) return mu;
+  if (p.e3 == 0) {
+    mu[0] = 0.5 * (p.e1 + std::sqrt(std::max(p.e1 * p.e1 - 4 * p.e2, 0.0)));
+    mu[1] = std::max(p.e2, 0.0) / mu[0];
+    return mu;
+  }
+  const std::array<double, 3> r = clifford::cubic_real_roots(p.e1, p.e2, p.e3);
+  for (std::size_t i = 0; i < 3; ++i) mu[i] = std::max(r[2 - i], 0.0);
+  return mu;
+}
+
+// Σ_n coefficients[n] Π_(i<n) (Y − nodes[i]) for a Y that commutes with itself only — the Newton
+// form of a function of Y (clifford::divided_differences), by Horner's scheme.
+template <int D>
+Multivector<D> newton_form(const Multivector<D>& y, const std::vector<double>& nodes,
+                           const std::vector<double>& coefficients) {
+  std::size_t n = coefficients.size();
+  Multivector<D> r = scalar<D>(coefficients[n - 1]);
+  while (--n > 0) r = geometric(r, y - scalar<D>(nodes[n - 1])) + scalar<D>(coefficients[n - 1]);
+  return r;
+}
+
+// Each value twice, ascending: Hermite nodes, so that nilpotent parts of the element (a
+// translation commuting with the rotations) get the first derivative of the function.
+inline std::vector<double> doubled_nodes(std::vector<double> values) {
+  const std::size_t n = values.size();
+  for (std::size_t i = 0; i < n; ++i) values.push_back(values[i]);
+  std::sort(values.begin(), values.end());
+  return values;
+}
+
+// exp of a bivector B of R(d,0,1), 4 ≤ d ≤ 7, without choosing planes. The power series splits
+// into even and odd terms: exp(B) = cos√Y + (sin√Y / √Y) B with Y = −B² (an element of grades 0,
+// 4 that commutes with B). With the invariant decomposition B = Σ ψ_j Ĵ_j + T (Ĵ_j² = −1), the
+// idempotents P_ε = Π_(j≥2) (1 − ε_j Ĵ_1 Ĵ_j)/2 give B P_ε = ω_ε Ĵ_1 P_ε, ω_ε = ψ1 ± ψ2 ± ψ3, so
+// Y = Σ_ε ω_ε² P_ε + N with N nilpotent (N = −2 T Σ ψ_j Ĵ_j, N² = 0). A function of Y is then its
+// Hermite interpolation at the nodes ω_ε² (each double), in Newton form: exact whatever the
+// angles — isoclinic planes (equal ψ: coinciding nodes), nearly isoclinic ones (clustered nodes,
+// clifford::divided_differences stays accurate), zero planes — and continuous across all of them.
+// Isoclinic example: exp(ψ (Ĵ1 + Ĵ2)) = cos²ψ + (cos ψ sin ψ / ψ) B + (sin²ψ / ψ²) W.
+template <int D>
+Multivector<D> exp_by_angle_sums(const Multivector<D>& b, const Multivector<D>& b2) {
+  const PlaneInvariants p = plane_invariants(b, b2);
+  std::vector<double> y;
+  if constexpr (D <= 5) {
+    // (ψ1 ± ψ2)² = μ1 + μ2 ± 2 √(μ1 μ2) straight from the invariants
+    const double root = std::sqrt(std::max(p.e2, 0.0));
+    y = {std::max(p.e1 - 2 * root, 0.0), p.e1 + 2 * root};
+  } else {
+    const std::array<double, 3> mu = squared_angles(p);
+    const double psi[3] = {std::sqrt(mu[0]), std::sqrt(mu[1]), std::sqrt(mu[2])};
+    for (double s2 : {1.0, -1.0})
+      for (double s3 : {1.0, -1.0}) {
+        const double omega = psi[0] + s2 * psi[1] + s3 * psi[2];
+        y.push_back(omega * omega);
+      }
+  }
+  const std::vector<double> nodes = doubled_nodes(y);
+  auto width = [](double c) { return 0.5 * std::max(1.0, std::sqrt(std::abs(c))); };
+  const std::vector<double> cos_dd = clifford::divided_differences(
+      nodes, [](double x) { return clifford::cos_sinc_sqrt(x).cos_sqrt; },
+      [](double c, int n) { return clifford::cos_sinc_sqrt_taylor(c, n).cos_sqrt; }, width);
+  const std::vector<double> sinc_dd = clifford::divided_differences(
+      nodes, [](double x) { return clifford::cos_sinc_sqrt(x).sinc_sqrt; },
+      [](double c, int n) { return clifford::cos_sinc_sqrt_taylor(c, n).sinc_sqrt; }, width);
+  const Multivector<D> y_element = -1.0 * b2;
+  return newton_form(y_element, nodes, cos_dd) +
+         geometric(newton_form(y_element, nodes, sinc_dd), b);
+}
+
+// log of a normalised motor M of R(d,0,1), 4 ≤ d ≤ 7, without choosing planes: the inverse of
+// exp_by_angle_sums. M = E + O with E = ⟨M⟩₀ + ⟨M⟩₄ + ⟨M⟩₈ = cos√Y and O = ⟨M⟩₂ + ⟨M⟩₆
+// = (sin√Y / √Y) B, so B = h(E) O with h(cos θ) = θ / sin θ (analytic for cos θ > −1, = 1 at
+// θ = 0). E = Σ_ε cos ω_ε P_ε + nilpotent, and ⟨P_ε⟩₀ = 2^(1−k) (k = 2 planes for d ≤ 5, 3
+// above; ideal and grade-4 parts have no scalar part), so the moments ⟨E^n⟩₀ are the mean powers
+// of the nodes cos ω_ε: d ≤ 5, cos ω_± = ⟨E⟩₀ ± √(⟨E²⟩₀ − ⟨E⟩₀²); d ≥ 6, the four roots of the
+// quartic whose power sums are 4 ⟨E^n⟩₀ (Newton's identities).
+// h takes each ω_ε in [0, π]. For d ≤ 5 any such pair ω_± = ψ1 ± ψ2 is consistent: every motor
+// has a log with |ψ1| + |ψ2| ≤ π. For d ≥ 6 four values ω_ε = ψ1 ± ψ2 ± ψ3 must satisfy
+// ω_++ + ω_−− = ω_+− + ω_−+; when |ψ1| + |ψ2| + |ψ3| > π the principal values may not, which
+// shows as a grade-6 part of h(E) O. Then some nodes take the next branch (θ − 2π)/sin θ: the
+// assignments are tried with the fewest shifted nodes first, and the first whose result is a
+// bivector is the log. Throws std::domain_error if none is (an angle of exactly π between
+// coinciding nodes).
+template <int D>
+Multivector<D> log_by_angle_sums(const Multivector<D>& m) {
+  const Multivector<D> e = grade(m, 0) + grade(m, 4) + grade(m, 8);
+  const Multivector<D> o = grade(m, 2) + grade(m, 6);
+  std::vector<double> c;
+  if constexpr (D <= 5) {
+    const double m1 = e.c[0], m2 = geometric(e, e).c[0];
+    const double kappa = std::sqrt(std::max(m2 - m1 * m1, 0.0));
+    c = {m1 - kappa, m1 + kappa};
+  } else {
+    double p[5] = {4, 0, 0, 0, 0};  // power sums Σ_ε cos^n ω_ε
+    Multivector<D> power = scalar<D>(1);
+    for (int n = 1; n <= 4; ++n) {
+      power = geometric(power, e);
+      p[n] = 4 * power.c[0];
+    }
+    // Newton's identities: elementary symmetric functions of the four nodes
+    const double s1 = p[1], s2 = (s1 * p[1] - p[2]) / 2, s3 = (s2 * p[1] - s1 * p[2] + p[3]) / 3,
+                 s4 = (s3 * p[1] - s2 * p[2] + s1 * p[3] - p[4]) / 4;
+    c = clifford::real_roots({s4, -s3, s2, -s1, 1.0}, -1 - 1e-9, 1 + 1e-9);
+  }
+  const std::vector<double> nodes = doubled_nodes(c);
+  // h is singular at c = −1 (θ = π), the shifted branch at c = 1: a run's spread stays well
+  // inside the Taylor radius
+  auto value = [](double x, int shifted) {
+    return shifted ? clifford::shifted_angle_over_sine_of_cosine(x)
+                   : clifford::angle_over_sine_of_cosine(x);
+  };
+  auto taylor = [](double x, int count, int shifted) {
+    return shifted ? clifford::shifted_angle_over_sine_taylor(x, count)
+                   : clifford::angle_over_sine_taylor(x, count);
+  };
+  auto width = [](double x, int shifted) {
+    return std::min(0.2, 0.25 * (shifted ? 1 - x : 1 + x));
+  };
+  const unsigned assignments = 1u << c.size();
+  for (int shifted_count = 0; shifted_count <= static_cast<int>(c.size()); ++shifted_count) {
+    for (unsigned shift = 0; shift < assignments; ++shift) {
+      if (clifford::grade_of(shift) != shifted_count) continue;
+      std::vector<int> branch(nodes.size());
+      for (std::size_t i = 0; i < nodes.size(); ++i)
+        for (std::size_t j = 0; j < c.size(); ++j)
+          if (nodes[i] == c[j]) branch[i] = static_cast<int>(shift >> j & 1u);
+      const std::vector<double> dd =
+          clifford::divided_differences(nodes, branch, value, taylor, width);
+      const Multivector<D> full = geometric(newton_form(e, nodes, dd), o);
+      const Multivector<D> b = grade(full, 2);
+      if constexpr (D <= 5) return b;
+      if (norm(grade(full, 6)) + ideal_norm(grade(full, 6)) <= 1e-9 * (1 + norm(b) + ideal_norm(b)))
+        return b;
+    }
+  }
+  throw std::domain_error(
+      "pgad::log: no bivector log found (a rotation angle of π shared by coinciding nodes)");
 }
 }  // namespace detail
 
-// The invariant decomposition of a bivector B of R(d,0,1), 4 ≤ d ≤ 5 (and d ≤ 3, where it is
-// Chasles' screw): the Euclidean part B_E splits into ≤ 2 plane rotations F_Ej; the ideal part
-// e0 t splits into the components t_j of t in those planes, which move the rotation centres
-// (F_j = F_Ej + e0 t_j is still simple, F_j² = λ_j), and the rest t_⊥, the translation e0 t_⊥
-// along the directions orthogonal to every plane; all parts commute. Throws std::domain_error
-// when two planes are isoclinic (equal angles: the planes are not unique).
+// The invariant decomposition of a bivector B of R(d,0,1), d ≤ 7: the Euclidean part B_E splits
+// into ≤ 3 plane rotations F_Ej, the ideal part e0 t into the components t_j of t in those planes,
+// which move the rotation centres (F_j = F_Ej + e0 t_j is still simple, F_j² = λ_j), and the rest
+// t_⊥, the translation e0 t_⊥ along the directions orthogonal to every plane; all parts commute.
+// The plane of F_j is the eigenspace of S x = −⟨⟨x B_E⟩₁ B_E⟩₁ for μ_j = −λ_j (μ_j are the roots
+// of plane_invariants' cubic), projected onto by the Lagrange polynomial
+// P_j = Π_(i≠j) (S − μ_i)/(μ_j − μ_i) (with μ = 0 among the others when the planes do not fill
+// R^d), and F_Ej = ½ Σ_a e_a ∧ P_j ⟨e_a B_E⟩₁ (a bivector from its skew map). Throws
+// std::domain_error when two planes are isoclinic (equal angles: the planes are not unique; exp
+// and log do not need them).
 template <int D>
 BivectorSplit<D> invariant_split(const Multivector<D>& b) {
-  static_assert(D <= 5, "at most two rotation planes: d ≤ 5");
   BivectorSplit<D> s{};
-  std::array<Multivector<D>, 2> fe{};
-  const int planes = detail::split_euclidean(detail::euclidean_part(grade(b, 2)), fe, s.square);
-  if (planes < 0)
-    throw std::domain_error("pgad: isoclinic rotation planes have no unique invariant split");
+  const Multivector<D> bivector = grade(b, 2);
+  const Multivector<D> f = detail::euclidean_part(bivector);
+  const std::array<double, 3> mu =
+      detail::squared_angles(detail::plane_invariants(f, geometric(f, f)));
+  int planes = 0;
+  for (double x : mu)
+    if (x > 1e-14 * mu[0]) ++planes;
+  for (int i = 0; i < planes; ++i)
+    for (int j = i + 1; j < planes; ++j)
+      if (mu[static_cast<std::size_t>(i)] - mu[static_cast<std::size_t>(j)] <=
+          detail::isoclinic_gap * mu[0])
+        throw std::domain_error("pgad: isoclinic rotation planes have no unique invariant split");
   s.rotations = planes;
-  Multivector<D> rest = detail::ideal_vector(b);
+  const bool kernel = D > 2 * planes;
+  auto skew = [&f](const Multivector<D>& x) { return grade(geometric(x, f), 1); };
+  auto project = [&](Multivector<D> x, int j) {
+    const double mj = mu[static_cast<std::size_t>(j)];
+    for (int i = 0; i < planes; ++i) {
+      const double mi = mu[static_cast<std::size_t>(i)];
+      if (i != j) x = (1.0 / (mj - mi)) * (-1.0 * skew(skew(x)) - mi * x);
+    }
+    if (kernel) x = (-1.0 / mj) * skew(skew(x));
+    return x;
+  };
+  const Multivector<D> t = detail::ideal_vector(bivector);
+  Multivector<D> rest = t;
   for (int j = 0; j < planes; ++j) {
+    Multivector<D> fj{};
+    for (int a = 0; a < D; ++a) {
+      const Multivector<D> ea = blade<D>(BladeMask{2} << a);
+      fj += 0.5 * outer(ea, project(skew(ea), j));
+    }
+    const Multivector<D> tj = project(t, j);
     const auto J = static_cast<std::size_t>(j);
-    const Multivector<D> tj = detail::project_on_plane(detail::ideal_vector(b), fe[J], s.square[J]);
-    s.rotation[J] = fe[J] + detail::e0_times(tj);
+    s.rotation[J] = fj + detail::e0_times(tj);
+    s.square[J] = -mu[J];
     rest = rest - tj;
   }
   s.translation = detail::e0_times(rest);
@@ -488,8 +653,9 @@ Multivector<D> exp_series(const Multivector<D>& b) {
 }
 
 // exp of a bivector B: closed form when B² is a scalar (rotation cos/sin, translation 1 + B), the
-// screw form when d = 3 (B² = scalar + e0123 part), the invariant decomposition when d = 4, 5
-// (commuting rotations and a translation); the series otherwise (isoclinic planes, d ≥ 6).
+// screw form when d = 3 (B² = scalar + e0123 part), and for 4 ≤ d ≤ 7 the closed form in the
+// angle sums (detail::exp_by_angle_sums: any number of rotation planes up to three, isoclinic or
+// not, and a translation); the series for arguments that are not bivectors.
 template <int D>
 Multivector<D> exp(const Multivector<D>& b) {
   const Multivector<D> b2 = geometric(b, b);
@@ -503,86 +669,30 @@ Multivector<D> exp(const Multivector<D>& b) {
     const clifford::StudyExp e = clifford::study_exp(b2.c[0], b2.c[15]);
     return scalar<D>(e.c0) + blade<D>(15, e.cI) + e.cL * b + e.cIL * geometric(blade<D>(15), b);
   }
-  if constexpr (D == 4 || D == 5) {
-    if (detail::only_grades(b, 1u << 2)) {
-      std::array<Multivector<D>, 2> fe{};
-      std::array<double, 2> squares{};
-      if (detail::split_euclidean(detail::euclidean_part(b), fe, squares) >= 0)
-        return exp_of_split(invariant_split(b));
-    }
+  if constexpr (D >= 4) {
+    if (detail::only_grades(b, 1u << 2)) return detail::exp_by_angle_sums(b, b2);
   }
   return exp_series(b);
 }
 
-namespace detail {
-// log of a normalised motor M of R(d,0,1), d = 4, 5, whose bivector is not simple, by the
-// invariant decomposition. M = (1 + e0 w) Π_j (c_j + s_j (F̂_j + e0 u_j)) with unit rotations
-// F̂_j (F̂_j² = −1) about orthogonal planes, u_j in plane j, w orthogonal to every plane.
-//  1. The Euclidean part M_E = Π_j (c_j + s_j F̂_j) has ⟨M_E⟩₂ = s1 c2 F̂1 + c1 s2 F̂2, which splits
-//     into its planes like any Euclidean bivector; ⟨M_E⟩₄ = s1 s2 F̂1 F̂2. With a0 = c1 c2,
-//     a1 = s1 c2, a2 = c1 s2, a12 = s1 s2: θ1 + θ2 = atan2(a1 + a2, a0 − a12) and
-//     θ1 − θ2 = atan2(a1 − a2, a0 + a12), robust whatever the angles (principal range
-//     |θ1| + |θ2| ≤ π).
-//  2. M M̃_E = 1 + e0 x with x = w + Σ_j s_j (c_j u_j − s_j u_j F̂_j) (e0² = 0), so the plane-j
-//     part x_j of x gives u_j = (c_j x_j + s_j x_j F̂_j)/s_j and the rest is w.
-// Then log M = Σ_j θ_j (F̂_j + e0 u_j) + e0 w.
-template <int D>
-Multivector<D> log_by_invariant_split(const Multivector<D>& m) {
-  const Multivector<D> me = euclidean_part(m);
-  const Multivector<D> h = grade(me, 4);
-  std::array<Multivector<D>, 2> g{};
-  std::array<double, 2> gl{};
-  int planes = split_euclidean(grade(me, 2), g, gl);
-  if (planes < 0)
-    throw std::domain_error(
-        "pgad::log: isoclinic rotation planes (equal angles) have no unique log");
-  std::array<Multivector<D>, 2> unit{};
-  std::array<double, 2> a{};
-  for (int j = 0; j < planes; ++j) {
-    const auto J = static_cast<std::size_t>(j);
-    a[J] = std::sqrt(-gl[J]);
-    unit[J] = (1.0 / a[J]) * g[J];
-  }
-  const double h_norm = norm(h);
-  if (planes == 1 && h_norm > 1e-12) {
-    // c = 0 in one plane hides the other from ⟨M_E⟩₂; it is F̂1⁻¹ ⟨M_E⟩₄ normalised.
-    unit[1] = (1.0 / h_norm) * grade(geometric(-1.0 * unit[0], h), 2);
-    planes = 2;
-  } else if (planes == 0 && h_norm > 1e-12) {
-    throw std::domain_error(
-        "pgad::log: isoclinic rotation planes (equal angles) have no unique log");
-  }
-  std::array<double, 2> theta{};
-  if (planes == 2) {
-    const double a12 = geometric(h, reverse(geometric(unit[0], unit[1]))).c[0];
-    const double sum = std::atan2(a[0] + a[1], me.c[0] - a12);
-    const double diff = std::atan2(a[0] - a[1], me.c[0] + a12);
-    theta = {0.5 * (sum + diff), 0.5 * (sum - diff)};
-  } else if (planes == 1) {
-    theta[0] = std::atan2(a[0], me.c[0]);
-  }
-  const Multivector<D> x = ideal_vector(geometric(m, reverse(me)));
-  Multivector<D> w = x, out{};
-  for (int j = 0; j < planes; ++j) {
-    const auto J = static_cast<std::size_t>(j);
-    const double c = std::cos(theta[J]), s = std::sin(theta[J]);
-    const Multivector<D> xj = project_on_plane(x, unit[J], -1.0);
-    const Multivector<D> turned = grade(geometric(xj, unit[J]), 1);
-    // θ u_j = (θ/s)(c x_j + s x_j F̂_j); θ/s → 1 as θ → 0
-    const double ratio = (s == 0) ? 1.0 : theta[J] / s;
-    out = out + theta[J] * unit[J] + e0_times(ratio * (c * xj + s * turned));
-    w = w - xj;
-  }
-  return out + e0_times(w);
-}
-}  // namespace detail
-
-// log of a normalised motor: closed form when its bivector part squares to a scalar (any d), the
-// screw form for d = 3, the invariant decomposition for d = 4, 5 (principal range: rotation
-// angles |θ1| + |θ2| ≤ π). Throws std::domain_error otherwise: isoclinic rotations (equal angles
-// in two planes: no unique log), d ≥ 6 with a non-simple bivector.
+// log of a normalised motor (M M̃ = 1, even grades): closed form when its bivector part squares
+// to a scalar (any d), the screw form for d = 3, and for 4 ≤ d ≤ 7 the closed form in the angle
+// sums (detail::log_by_angle_sums; isoclinic planes included). Principal range: rotation angles
+// |ψ1| + |ψ2| + |ψ3| < π. Throws std::domain_error when M is not a normalised motor.
 template <int D>
 Multivector<D> log(const Multivector<D>& m) {
+  double scale = 0;
+  for (double x : m.c) scale = std::max(scale, std::abs(x));
+  const Multivector<D> unit = geometric(m, reverse(m)) - scalar<D>(1);
+  double off = 0;
+  for (BladeMask i = 0; i < m.size; ++i) {
+    off = std::max(off, std::abs(unit.c[i]));
+    if (clifford::grade_of(i) % 2) off = std::max(off, std::abs(m.c[i]) / std::max(scale, 1.0));
+  }
+  if (!(off <= 1e-8))
+    throw std::domain_error(
+        "pgad::log: the argument is not a normalised motor (odd grades, or M M̃ ≠ 1 by " +
+        std::to_string(off) + ")");
   const Multivector<D> b = grade(m, 2);
   const Multivector<D> b2 = geometric(b, b);
   if (detail::only_grades(m, 1u | 4u) && detail::only_grades(b2, 1u))
@@ -592,9 +702,7 @@ Multivector<D> log(const Multivector<D>& m) {
         clifford::study_log(m.c[0], norm(b), m.c[Multivector<D>::pseudoscalar]);
     return l.cL * b + l.cIL * geometric(blade<D>(Multivector<D>::pseudoscalar), b);
   }
-  if constexpr (D == 4 || D == 5) {
-    if (detail::only_grades(m, 0b1010101u)) return detail::log_by_invariant_split(m);
-  }
+  if constexpr (D >= 4) return detail::log_by_angle_sums(m);
   throw std::domain_error("pgad::log: no closed form for this motor");
 }
 

@@ -2,7 +2,11 @@
 // compile-time PGA R(d,0,1), so each formula lives in one place.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
+#include <cstddef>
+#include <numbers>
+#include <vector>
 
 namespace pgamesh::clifford {
 
@@ -54,6 +58,142 @@ inline StudyLog study_log(double m0, double euclidean_norm, double m7) {
   const double psi = std::atan2(sn, m0);
   const double delta = -m7 / sn;
   return {psi / sn, delta * (sn - psi * std::cos(psi)) / (sn * sn)};
+}
+
+// ---- functions of a commuting bivector or motor part (see divided_differences.hpp) -------------
+// exp(B) = cos√Y + sinc√Y · B with Y = −B² (the power series of exp split into even and odd
+// terms), and log M = (θ / sin θ)(E) · O for M = E + O with E = cos θ (docs/clifford.md). Each
+// function gives its value and its Taylor coefficients about any centre, so that its divided
+// differences over clustered arguments stay accurate.
+
+// cos√y and sin√y/√y (y ≥ 0; cosh and sinh for y < 0).
+struct CosSincSqrt {
+  double cos_sqrt, sinc_sqrt;
+};
+inline CosSincSqrt cos_sinc_sqrt(double y) {
+  if (std::abs(y) < 1e-4) {  // Taylor, exact at 0 where sin√y/√y is 0/0
+    return {1 - y / 2 * (1 - y / 12 * (1 - y / 30)), 1 - y / 6 * (1 - y / 20 * (1 - y / 42))};
+  }
+  if (y < 0) {
+    const double r = std::sqrt(-y);
+    return {std::cosh(r), std::sinh(r) / r};
+  }
+  const double r = std::sqrt(y);
+  return {std::cos(r), std::sin(r) / r};
+}
+
+// Taylor coefficients a_0 … a_(count−1) of cos√y and of sin√y/√y about y = c: for |c| ≤ 4 by
+// re-centring their series about 0 (Σ (−y)^k/(2k)!, Σ (−y)^k/(2k+1)!; no cancellation there), for
+// c > 4 from the derivatives, which follow from C' = −S/2 and 2y S' = C − S:
+// C^(n+1) = −S^(n)/2, S^(n+1) = (C^(n) − (2n+1) S^(n)) / (2c).
+struct CosSincTaylor {
+  std::vector<double> cos_sqrt, sinc_sqrt;
+};
+inline CosSincTaylor cos_sinc_sqrt_taylor(double c, int count) {
+  const auto n = static_cast<std::size_t>(count);
+  CosSincTaylor t{std::vector<double>(n, 0.0), std::vector<double>(n, 0.0)};
+  if (c > 4) {
+    const CosSincSqrt v = cos_sinc_sqrt(c);
+    double cd = v.cos_sqrt, sd = v.sinc_sqrt, factorial = 1;
+    for (std::size_t m = 0; m < n; ++m) {
+      t.cos_sqrt[m] = cd / factorial;
+      t.sinc_sqrt[m] = sd / factorial;
+      const double next_s = (cd - (2.0 * static_cast<double>(m) + 1) * sd) / (2 * c);
+      cd = -sd / 2;
+      sd = next_s;
+      factorial *= static_cast<double>(m + 1);
+    }
+    return t;
+  }
+  // a_m = Σ_(k≥m) b_k C(k, m) c^(k−m); terms fall like |c|^k/(2k)!, 40 beyond m are plenty.
+  const std::size_t kmax = n + 40;
+  double bc = 1, bs = 1;  // (−1)^k/(2k)!, (−1)^k/(2k+1)!
+  for (std::size_t k = 0; k <= kmax; ++k) {
+    // binom_pow[m] = C(k, m) c^(k−m) for m ≤ min(k, n−1), by m from k downwards
+    const std::size_t top = std::min(k, n - 1);
+    double term = 1;  // m = k
+    for (std::size_t m = k; m > top; --m) term *= c * static_cast<double>(m) / (k - m + 1.0);
+    for (std::size_t m = top + 1; m-- > 0;) {
+      t.cos_sqrt[m] += bc * term;
+      t.sinc_sqrt[m] += bs * term;
+      if (m > 0) term *= c * static_cast<double>(m) / (static_cast<double>(k - m) + 1.0);
+    }
+    bc *= -1.0 / ((2.0 * static_cast<double>(k) + 1) * (2.0 * static_cast<double>(k) + 2));
+    bs *= -1.0 / ((2.0 * static_cast<double>(k) + 2) * (2.0 * static_cast<double>(k) + 3));
+  }
+  return t;
+}
+
+// θ / sin θ as a function of c = cos θ (θ = acos c ∈ [0, π)): analytic for c > −1, including
+// c = 1 where it is 1. About c = 1 its Taylor coefficients solve (1 − c²) h' = c h − 1:
+// g_0 = 1, g_n = −n g_(n−1) / (2n + 1) (radius 2).
+inline double angle_over_sine_of_cosine(double c) {
+  if (std::abs(c - 1) < 0.125) {
+    double sum = 0, g = 1, power = 1;
+    for (int k = 0; k < 60; ++k) {
+      sum += g * power;
+      g *= -(k + 1.0) / (2.0 * k + 3);
+      power *= c - 1;
+    }
+    return sum;
+  }
+  return std::acos(c) / std::sqrt((1 - c) * (1 + c));
+}
+
+// Taylor coefficients of θ / sin θ (c = cos θ) about c0: for c0 ≥ −½ the series about 1
+// re-centred (its terms g_k C(k, m) (c0 − 1)^(k−m) all have the sign (−1)^m: no cancellation);
+// below, the recurrence from (1 − c²) h' = c h − 1:
+// a_1 = (c0 a_0 − 1)/(1 − c0²), a_(n+1) = ((2n+1) c0 a_n + n a_(n−1)) / ((1 − c0²)(n+1)).
+namespace detail {
+// Taylor coefficients about c0 (|c0| < 1) of a solution of (1 − c²) f' = c f − r with f(c0) = f0:
+// a_1 = (c0 a_0 − r)/(1 − c0²), a_(n+1) = ((2n+1) c0 a_n + n a_(n−1)) / ((1 − c0²)(n+1)).
+// r = 1: θ / sin θ; r = 0: 1 / sin θ = (1 − c²)^(−1/2).
+inline std::vector<double> arc_taylor(double c0, double f0, double r, std::size_t n) {
+  std::vector<double> a(n, 0.0);
+  const double q = (1 - c0) * (1 + c0);
+  a[0] = f0;
+  if (n > 1) a[1] = (c0 * a[0] - r) / q;
+  for (std::size_t k = 1; k + 1 < n; ++k) {
+    const double kd = static_cast<double>(k);
+    a[k + 1] = ((2 * kd + 1) * c0 * a[k] + kd * a[k - 1]) / (q * (kd + 1));
+  }
+  return a;
+}
+}  // namespace detail
+
+inline std::vector<double> angle_over_sine_taylor(double c0, int count) {
+  const auto n = static_cast<std::size_t>(count);
+  std::vector<double> a(n, 0.0);
+  if (c0 < -0.5) return detail::arc_taylor(c0, angle_over_sine_of_cosine(c0), 1.0, n);
+  const double z = c0 - 1;
+  // terms fall like (|z|/2)^k; stop when below 1e-20 of the leading one
+  const double ratio = std::max(std::abs(z) / 2, 1e-3);
+  const std::size_t kmax = n + static_cast<std::size_t>(std::ceil(-46.0 / std::log(ratio)));
+  double g = 1;
+  for (std::size_t k = 0; k <= kmax; ++k) {
+    const std::size_t top = std::min(k, n - 1);
+    double term = 1;  // C(k, m) z^(k−m) at m = k
+    for (std::size_t m = k; m > top; --m) term *= z * static_cast<double>(m) / (k - m + 1.0);
+    for (std::size_t m = top + 1; m-- > 0;) {
+      a[m] += g * term;
+      if (m > 0) term *= z * static_cast<double>(m) / (static_cast<double>(k - m) + 1.0);
+    }
+    g *= -(static_cast<double>(k) + 1) / (2.0 * static_cast<double>(k) + 3);
+  }
+  return a;
+}
+
+// The next branch: (θ − 2π) / sin θ = h(c) − 2π / √(1 − c²) as a function of c = cos θ
+// (singular at c = 1 instead of c = −1), and its Taylor coefficients about c0 ∈ (−1, 1).
+inline double shifted_angle_over_sine_of_cosine(double c) {
+  return angle_over_sine_of_cosine(c) - 2 * std::numbers::pi / std::sqrt((1 - c) * (1 + c));
+}
+inline std::vector<double> shifted_angle_over_sine_taylor(double c0, int count) {
+  std::vector<double> a = angle_over_sine_taylor(c0, count);
+  const std::vector<double> g = detail::arc_taylor(c0, 1 / std::sqrt((1 - c0) * (1 + c0)), 0.0,
+                                                   static_cast<std::size_t>(count));
+  for (std::size_t k = 0; k < a.size(); ++k) a[k] -= 2 * std::numbers::pi * g[k];
+  return a;
 }
 
 }  // namespace pgamesh::clifford

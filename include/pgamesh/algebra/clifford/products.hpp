@@ -57,14 +57,15 @@ Multivector inverse(const Algebra& alg, const Multivector& a);
 Multivector sandwich(const Algebra& alg, const Multivector& v, const Multivector& x);
 
 // exp(A): closed forms when A² is a scalar (cos/sin, cosh/sinh, 1 + A) or, in R(3,0,1), a scalar
-// plus pseudoscalar (screw motion, dual-number angle); in R(4,0,1) and R(5,0,1) the invariant
-// decomposition into commuting simple bivectors (pgad::invariant_split); otherwise a
+// plus pseudoscalar (screw motion, dual-number angle); in R(d,0,1), 4 ≤ d ≤ 7, pgad::exp's closed
+// form in the angle sums of the invariant decomposition (isoclinic planes included); otherwise a
 // scaled-and-squared Taylor series.
 Multivector exp(const Algebra& alg, const Multivector& a);
 
 // log of a normalised rotor or motor s + B (+ p I): closed forms when B² is a scalar, the screw
-// (Study number) form in R(3,0,1), and the invariant decomposition in R(4,0,1), R(5,0,1)
-// (pgad::log). Throws std::domain_error when no closed form applies.
+// (Study number) form in R(3,0,1), and pgad::log in R(d,0,1), 4 ≤ d ≤ 7 (principal range: rotation
+// angles summing to less than π). Throws std::domain_error when no closed form applies or the
+// argument is not a normalised motor.
 Multivector log(const Algebra& alg, const Multivector& a);
 
 // Square root of a normalised rotor or motor: exp(½ log R).
