@@ -7,6 +7,7 @@
 #include <random>
 
 #include "pgamesh/algebra/clifford.hpp"
+#include "pgamesh/algebra/graded.hpp"
 #include "pgamesh/algebra/pga3.hpp"
 #include "pgamesh/algebra/pgad.hpp"
 
@@ -69,6 +70,124 @@ void BM_Cga3NullBasis_OuterOfFourPoints(benchmark::State& s) {
   }
 }
 BENCHMARK(BM_Cga3NullBasis_OuterOfFourPoints);
+
+// ---- R(4,1) with compile-time graded multivectors (pgamesh::graded)
+// ------------------------------ Inputs cycle through 64 random values so that no product can be
+// hoisted out of the loop, and every result goes through DoNotOptimize.
+
+using R41 = graded::Algebra<4, 1>;
+constexpr std::size_t graded_inputs = 64;
+
+template <class M>
+std::vector<M> random_inputs(std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::vector<M> out(graded_inputs);
+  for (M& m : out)
+    for (double& c : m.c) c = u(rng);
+  return out;
+}
+
+// Rotors exp(B) of random bivectors (the engine's exp), as graded even multivectors.
+std::vector<graded::Even<R41>> random_rotors(std::mt19937_64& rng) {
+  const auto alg = graded::runtime_algebra<R41>();
+  std::vector<graded::Even<R41>> out;
+  for (const auto& b : random_inputs<graded::Bivector<R41>>(rng))
+    out.push_back(
+        graded::from_clifford<graded::Even<R41>>(clifford::exp(alg, 0.3 * graded::to_clifford(b))));
+  return out;
+}
+
+// Conformal points X = x + ½x² e∞ + e_o with e∞ = e4 + e5, e_o = ½(e5 − e4) (ERRATA §0.3).
+graded::Vector<R41> conformal_point(double x, double y, double z) {
+  const double h = 0.5 * (x * x + y * y + z * z);
+  return {{x, y, z, h - 0.5, h + 0.5}};
+}
+
+template <class M1, class M2, class F>
+void run_graded(benchmark::State& s, std::uint64_t seed, F f) {
+  std::mt19937_64 rng(seed);
+  const auto a = random_inputs<M1>(rng);
+  const auto b = random_inputs<M2>(rng);
+  std::size_t i = 0;
+  for (auto _ : s) {
+    benchmark::DoNotOptimize(f(a[i], b[i]));
+    i = (i + 1) % graded_inputs;
+  }
+}
+
+void BM_Graded_R41_GeometricVectorVector(benchmark::State& s) {
+  run_graded<graded::Vector<R41>, graded::Vector<R41>>(
+      s, 21, [](const auto& a, const auto& b) { return a * b; });
+}
+BENCHMARK(BM_Graded_R41_GeometricVectorVector);
+
+void BM_Graded_R41_GeometricEvenEven(benchmark::State& s) {
+  run_graded<graded::Even<R41>, graded::Even<R41>>(
+      s, 22, [](const auto& a, const auto& b) { return a * b; });
+}
+BENCHMARK(BM_Graded_R41_GeometricEvenEven);
+
+void BM_Graded_R41_GeometricFullFull(benchmark::State& s) {
+  run_graded<graded::Full<R41>, graded::Full<R41>>(
+      s, 23, [](const auto& a, const auto& b) { return a * b; });
+}
+BENCHMARK(BM_Graded_R41_GeometricFullFull);
+
+void BM_Graded_R41_SandwichRotorOnVector(benchmark::State& s) {
+  std::mt19937_64 rng(24);
+  const auto r = random_rotors(rng);
+  const auto x = random_inputs<graded::Vector<R41>>(rng);
+  std::size_t i = 0;
+  for (auto _ : s) {
+    benchmark::DoNotOptimize(graded::sandwich(r[i], x[i]));
+    i = (i + 1) % graded_inputs;
+  }
+}
+BENCHMARK(BM_Graded_R41_SandwichRotorOnVector);
+
+std::vector<graded::Vector<R41>> random_conformal_points(std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> u(-2, 2);
+  std::vector<graded::Vector<R41>> out;
+  for (std::size_t i = 0; i < graded_inputs + 2; ++i)
+    out.push_back(conformal_point(u(rng), u(rng), u(rng)));
+  return out;
+}
+
+void BM_Graded_R41_OuterOfThreeConformalPoints(benchmark::State& s) {
+  std::mt19937_64 rng(25);
+  const auto p = random_conformal_points(rng);
+  std::size_t i = 0;
+  for (auto _ : s) {
+    benchmark::DoNotOptimize(p[i] ^ p[i + 1] ^ p[i + 2]);  // the circle through three points
+    i = (i + 1) % graded_inputs;
+  }
+}
+BENCHMARK(BM_Graded_R41_OuterOfThreeConformalPoints);
+
+void BM_R41_OuterOfThreeConformalPoints(benchmark::State& s) {  // the general engine, same input
+  const auto alg = graded::runtime_algebra<R41>();
+  std::mt19937_64 rng(25);
+  std::vector<Multivector> p;
+  for (const auto& x : random_conformal_points(rng)) p.push_back(graded::to_clifford(x));
+  std::size_t i = 0;
+  for (auto _ : s) {
+    benchmark::DoNotOptimize(clifford::outer(alg, clifford::outer(alg, p[i], p[i + 1]), p[i + 2]));
+    i = (i + 1) % graded_inputs;
+  }
+}
+BENCHMARK(BM_R41_OuterOfThreeConformalPoints);
+
+void BM_Graded_Pga3JoinThreePoints(benchmark::State& s) {
+  using R301 = graded::Algebra<3, 0, 1>;
+  std::mt19937_64 rng(26);
+  const auto p = random_inputs<graded::KVector<R301, 3>>(rng);
+  std::size_t i = 0;
+  for (auto _ : s) {
+    benchmark::DoNotOptimize(p[i] & p[(i + 1) % graded_inputs] & p[(i + 2) % graded_inputs]);
+    i = (i + 1) % graded_inputs;
+  }
+}
+BENCHMARK(BM_Graded_Pga3JoinThreePoints);
 
 // ---- R(9,6): QCGA, 32768 blades
 // -------------------------------------------------------------------
