@@ -97,8 +97,10 @@ PropsReport props_of(std::span<const char> bytes, const std::string& name,
       } else {
         const WeldedTriangles welded = weld_binary_stl(*view, name, release_records);
         const Vec3d reference = bounding_box(welded.positions).centre();  // reference_point()
-        r.mass = mass_properties(welded, reference, options.mass, true);
-        r.topology = analyze_welded_triangles(welded, reference, options.topology_options);
+        WeldedTriangleProps props = analyze_welded_triangles(welded, reference, options.mass,
+                                                             options.topology_options, true);
+        r.mass = std::move(props.mass);
+        r.topology = std::move(props.topology);
       }
       r.warnings = r.mass.warnings;
       judge(r);

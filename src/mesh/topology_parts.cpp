@@ -110,21 +110,23 @@ void check_topology_options(const TopologyOptions& options) {
     throw std::invalid_argument("area threshold must be a finite number >= 0");
 }
 
-void tally_face(TopologyTally& t, std::uint32_t f, bool collapsed) {
+namespace {
+
+// The degenerate-face part of tally_face: face f (k corners, corner(i) its i-th position) is
+// counted as zero-area or small when it is. Degenerate faces are judged on the normal about the
+// face's own first corner (digits).
+template <class CornerAt>
+void tally_degenerate(TopologyTally& t, std::uint32_t f, bool collapsed, std::uint32_t k,
+                      CornerAt corner) {
   TopologyReport& r = t.r;
-  const WeldedFaces& mesh = t.mesh;
-  const std::uint32_t begin = mesh.begin(f), k = mesh.size(f);
-  if (k >= 3) r.triangles += k - 2;
-  add_surface(t.total, face_surface_sums(mesh, f, r.reference_point));
-  // Degenerate faces are judged on the normal about the face's own first corner (digits).
-  const Vec3d n = own_normal(mesh, f);
+  const Vec3d n = polygon_normal(k, corner);  // own_normal
   const bool zero = collapsed || (n.x == 0 && n.y == 0 && n.z == 0);
   const double own_area = 0.5 * length(n);
   bool small = false;
   if (!zero) {
     double longest2 = 0;
     for (std::uint32_t i = 0; i < k; ++i) {
-      const Vec3d d = mesh.corner_position(begin + (i + 1) % k) - mesh.corner_position(begin + i);
+      const Vec3d d = corner((i + 1) % k) - corner(i);
       longest2 = std::max(longest2, dot(d, d));
     }
     small = own_area <= t.area_threshold * longest2;
@@ -133,12 +135,42 @@ void tally_face(TopologyTally& t, std::uint32_t f, bool collapsed) {
   FaceLocation loc;
   loc.face = f;
   loc.area = own_area;
-  loc.centroid = face_centroid(mesh, f);
+  loc.centroid = face_centroid(t.mesh, f);
   if (zero) {
     if (r.zero_area_faces++ < t.cap) r.zero_area_list.push_back(loc);
   } else {
     if (r.small_area_faces++ < t.cap) r.small_area_list.push_back(loc);
   }
+}
+
+}  // namespace
+
+void tally_face(TopologyTally& t, std::uint32_t f, bool collapsed) {
+  const WeldedFaces& mesh = t.mesh;
+  const std::uint32_t begin = mesh.begin(f), k = mesh.size(f);
+  if (k == 3) {
+    const std::array<Vec3d, 3> p{mesh.corner_position(begin), mesh.corner_position(begin + 1),
+                                 mesh.corner_position(begin + 2)};
+    const Vec3d ref = t.r.reference_point;
+    tally_triangle(t, f, collapsed, p, triangle_carrier(p[0] - ref, p[1] - ref, p[2] - ref));
+    return;
+  }
+  if (k >= 3) t.r.triangles += k - 2;
+  add_surface(t.total, face_surface_sums(mesh, f, t.r.reference_point));
+  tally_degenerate(t, f, collapsed, k, [&](std::size_t i) {
+    return mesh.corner_position(begin + static_cast<std::uint32_t>(i));
+  });
+}
+
+void tally_triangle(TopologyTally& t, std::uint32_t f, bool collapsed,
+                    const std::array<Vec3d, 3>& corner, const pga3::Plane<double>& carrier) {
+  t.r.triangles += 1;
+  // face_surface_sums of a triangle, with the same additions.
+  BoundarySums p;
+  p.volume6 += origin_join(carrier);
+  add_face_carrier(p, carrier);
+  add_surface(t.total, p);
+  tally_degenerate(t, f, collapsed, 3, [&](std::size_t i) { return corner[i]; });
 }
 
 void tally_component_sums(TopologyTally& t, std::span<const std::uint32_t> face_component) {

@@ -4,6 +4,7 @@
 // same report bit for bit. Internal to the library.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -52,6 +53,13 @@ void check_topology_options(const TopologyOptions& options);
 // zero or small area. Call in face order. Touches neither `components` nor `area2`/`volume6`, so it
 // may run while another thread finds the components.
 void tally_face(TopologyTally& t, std::uint32_t f, bool collapsed);
+
+// Triangle f whose corners are `corner` (welded coordinates) and whose carrier about
+// r.reference_point is `carrier` (triangle_carrier of the corners minus the reference point, as
+// add_triangle forms it): what tally_face does for a triangle, without forming the carrier again —
+// the fast triangle pass computes it once for the mass sums and the tally.
+void tally_triangle(TopologyTally& t, std::uint32_t f, bool collapsed,
+                    const std::array<Vec3d, 3>& corner, const pga3::Plane<double>& carrier);
 
 // The per-component sums, once every face has been tallied: face_component[f] is f's component
 // or no_edge. When one component holds every face its sums are the total's (the same additions in

@@ -1,12 +1,14 @@
 #include "pgamesh/mesh/triangle_topology.hpp"
 
 #include <algorithm>
+#include <array>
 #include <exception>
 #include <thread>
 #include <utility>
 #include <vector>
 
 #include "edge_group.hpp"
+#include "pgamesh/geometry/chunked_sums.hpp"
 #include "pgamesh/mesh/boundary_loops.hpp"
 #include "topology_parts.hpp"
 #include "union_find.hpp"
@@ -153,15 +155,43 @@ EdgePass edge_pass(const WeldedTriangles& mesh) {
   return out;
 }
 
-// Triangles per thread below which the face tally is not worth a thread of its own.
+// The faces' pass: the mass sums of every triangle (add_triangle, as mass_properties of
+// welded_triangles.hpp) and its tally (sums, degenerate faces), with each carrier formed once for
+// both. One thread walks the chunks in order, so the mass sums are chunked_sums' (fixed chunking:
+// the same bits as on any number of threads) and the tally sees the faces in order.
+BoundarySums face_pass(const WeldedTriangles& mesh, Vec3d reference, detail::TopologyTally& tally) {
+  const Vec3d* p = mesh.positions.data();
+  const std::uint32_t* corner = mesh.corners.data();
+  return chunked_sums(mesh.triangle_count(), 1,
+                      [&](BoundarySums& s, std::size_t begin, std::size_t end) {
+                        for (std::size_t f = begin; f < end; ++f) {
+                          const std::uint32_t* c = corner + 3 * f;
+                          const std::array<Vec3d, 3> v{p[c[0]], p[c[1]], p[c[2]]};
+                          const pga3::Plane<double> carrier =
+                              add_triangle(s, v[0] - reference, v[1] - reference, v[2] - reference);
+                          detail::tally_triangle(tally, static_cast<std::uint32_t>(f),
+                                                 collapsed(corner, f), v, carrier);
+                        }
+                      });
+}
+
+// Triangles per thread below which the face pass is not worth a thread of its own.
 constexpr std::size_t faces_per_thread = std::size_t{1} << 14;
 
 }  // namespace
 
 TopologyReport analyze_welded_triangles(const WeldedTriangles& mesh, Vec3d reference,
                                         const TopologyOptions& options) {
+  return analyze_welded_triangles(mesh, reference, MassOptions{}, options, false).topology;
+}
+
+WeldedTriangleProps analyze_welded_triangles(const WeldedTriangles& mesh, Vec3d reference,
+                                             const MassOptions& mass_options,
+                                             const TopologyOptions& options,
+                                             bool single_precision) {
   detail::check_topology_options(options);
-  TopologyReport r;
+  WeldedTriangleProps props;
+  TopologyReport& r = props.topology;
   const std::size_t face_count = mesh.triangle_count();
   const std::uint32_t* corner = mesh.corners.data();
   r.faces = face_count;
@@ -175,22 +205,19 @@ TopologyReport analyze_welded_triangles(const WeldedTriangles& mesh, Vec3d refer
   const detail::WeldedFaces faces{mesh.positions, mesh.representative, mesh.corners, {}};
   detail::TopologyTally tally(r, faces, options);
 
-  // The faces' sums and degenerate faces need no edges: a second thread tallies them while this
-  // one runs the edge pass. Each pass writes only its own data, so the result is the same as in
-  // one thread.
-  auto face_tally = [&] {
-    for (std::size_t f = 0; f < face_count; ++f)
-      detail::tally_face(tally, static_cast<std::uint32_t>(f), collapsed(corner, f));
-  };
+  // The face pass needs no edges: a second thread runs it while this one runs the edge pass.
+  // Each pass writes only its own data, so the result is the same as in one thread.
+  BoundarySums sums;
+  auto face_work = [&] { sums = face_pass(mesh, reference, tally); };
   EdgePass edges;
   if (face_count < faces_per_thread) {
-    face_tally();
+    face_work();
     edges = edge_pass(mesh);
   } else {
     std::exception_ptr face_error;
     std::thread face_thread([&] {
       try {
-        face_tally();
+        face_work();
       } catch (...) {
         face_error = std::current_exception();
       }
@@ -204,6 +231,8 @@ TopologyReport analyze_welded_triangles(const WeldedTriangles& mesh, Vec3d refer
     face_thread.join();
     if (face_error) std::rethrow_exception(face_error);
   }
+  props.mass =
+      mass_properties_from_welded_sums(mesh, sums, reference, mass_options, single_precision);
 
   r.edges = edges.edges;
   r.collapsed_faces = edges.collapsed_faces;
@@ -223,7 +252,7 @@ TopologyReport analyze_welded_triangles(const WeldedTriangles& mesh, Vec3d refer
   }
   detail::finish_report(tally, edges.duplicates,
                         trace_boundary_loops(sides, tails, heads, mesh.positions, reference));
-  return r;
+  return props;
 }
 
 }  // namespace pgamesh

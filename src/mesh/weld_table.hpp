@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "huge_pages.hpp"
+
 namespace pgamesh::detail {
 
 // MurmurHash3's 64-bit finaliser: every input bit affects every output bit, so coordinates that
@@ -33,6 +35,7 @@ class WeldTable {
   explicit WeldTable(std::size_t expected) {
     std::size_t cap = 64;
     while (cap < 2 * expected) cap *= 2;
+    reserve_huge(slots_, cap);  // probed at random: huge pages spare the TLB misses
     slots_.assign(cap, 0);
     mask_ = cap - 1;
   }
@@ -81,7 +84,9 @@ class WeldTable {
  private:
   template <class Keys>
   void grow(const Keys& keys) {
-    std::vector<std::uint64_t> old(slots_.size() * 2, 0);
+    std::vector<std::uint64_t> old;
+    reserve_huge(old, slots_.size() * 2);
+    old.assign(slots_.size() * 2, 0);
     old.swap(slots_);
     mask_ = slots_.size() - 1;
     for (std::size_t id = 0; id < keys.size(); ++id) {

@@ -77,6 +77,12 @@ MassProperties mass_properties(const WeldedTriangles& mesh, Vec3d reference,
                        add_triangle(s, p[c[3 * t]] - reference, p[c[3 * t + 1]] - reference,
                                     p[c[3 * t + 2]] - reference);
                    });
+  return mass_properties_from_welded_sums(mesh, sums, reference, options, single_precision);
+}
+
+MassProperties mass_properties_from_welded_sums(const WeldedTriangles& mesh,
+                                                const BoundarySums& sums, Vec3d reference,
+                                                const MassOptions& options, bool single_precision) {
   MassProperties m = mass_properties_from_sums(sums, reference, options);
   m.faces = m.triangles = mesh.triangle_count();
   m.vertices = mesh.input_vertices;

@@ -217,6 +217,49 @@ TEST(TopologyTriangles, LargeMeshesTakeTheTwoThreadPathAndAgree) {
   EXPECT_GT(two.inconsistent_edges, 0u);
 }
 
+// The one-pass mass properties and topology against mass_properties and analyze_welded_triangles
+// called apart: the same bits, on soups (one thread, one chunk) and on a large damaged mesh far
+// from the origin (the face pass on its own thread, many chunks of chunked_sums).
+void expect_one_pass_agrees(const Mesh& m) {
+  const WeldedTriangles w = weld_triangles(m);
+  const Vec3d ref = bounding_box(w.positions).centre();
+  MassOptions mass_options;
+  mass_options.density = 2.5;
+  mass_options.threads = 2;
+  TopologyOptions small_lists;
+  small_lists.list_cap = 3;
+  const WeldedTriangleProps both =
+      analyze_welded_triangles(w, ref, mass_options, small_lists, true);
+  expect_same_report(both.topology, analyze_welded_triangles(w, ref, small_lists));
+  const MassProperties apart = mass_properties(w, ref, mass_options, true);
+  const MassProperties& one = both.mass;
+  EXPECT_SAME(one.volume, apart.volume);
+  EXPECT_SAME(one.area, apart.area);
+  EXPECT_SAME(one.mass, apart.mass);
+  EXPECT_SAME_VEC(one.center_of_mass, apart.center_of_mass);
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      EXPECT_SAME(one.inertia_com[i][j], apart.inertia_com[i][j]);
+      EXPECT_SAME(one.inertia_origin[i][j], apart.inertia_origin[i][j]);
+    }
+  EXPECT_EQ(one.faces, apart.faces);
+  EXPECT_EQ(one.triangles, apart.triangles);
+  EXPECT_EQ(one.vertices, apart.vertices);
+  EXPECT_EQ(one.warnings, apart.warnings);
+}
+
+TEST(TopologyTriangles, MassAndTopologyInOnePassMatchTheSeparatePasses) {
+  for (std::uint32_t seed = 1; seed <= 20; ++seed) {
+    SCOPED_TRACE(seed);
+    expect_one_pass_agrees(grid_soup(seed, 4 + 3 * seed));
+  }
+  using namespace test;
+  const Mesh sphere = icosphere(6, 1.0);
+  const Mesh damaged = with_flipped(without_faces(sphere, {10, 500}), {3, 9000});
+  expect_one_pass_agrees(
+      translated(merged(damaged, translated(sphere, {3, 0, 0})), {1e5, 0, -1e5}));
+}
+
 TEST(TopologyTriangles, SharedRealMeshesAgree) {
   if (test::shared_meshes_dir().empty())
     GTEST_SKIP() << "../shared/meshes not found (" PGAMESH_SHARED_MESHES_DIR "): skipped";

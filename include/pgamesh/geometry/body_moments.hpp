@@ -70,9 +70,12 @@ inline void add_face_carrier(BoundarySums& s, const pga3::Plane<double>& f) {
   s.carrier_sum.e3 += f.e3;
 }
 
-// Adds the triangle (a, b, c), coordinates relative to the reference point.
-inline void add_triangle(BoundarySums& s, Vec3d a, Vec3d b, Vec3d c) {
-  add_face_carrier(s, add_tetrahedron(s, a, b, c));
+// Adds the triangle (a, b, c), coordinates relative to the reference point, and returns its
+// carrier F = a ∨ b ∨ c (for a caller that sums more of it, as the topology pass does).
+inline pga3::Plane<double> add_triangle(BoundarySums& s, Vec3d a, Vec3d b, Vec3d c) {
+  const pga3::Plane<double> f = add_tetrahedron(s, a, b, c);
+  add_face_carrier(s, f);
+  return f;
 }
 
 // Adds the polygon v[0], …, v[n−1] (n ≥ 3, coordinates relative to the reference point) without

@@ -18,4 +18,18 @@ namespace pgamesh {
 TopologyReport analyze_welded_triangles(const WeldedTriangles& mesh, Vec3d reference,
                                         const TopologyOptions& options = {});
 
+// Mass properties and topology report of welded triangles, from one pass over the triangles that
+// forms each carrier once for both: the same figures, bit for bit, as
+// mass_properties(mesh, reference, mass_options, single_precision) and
+// analyze_welded_triangles(mesh, reference, topology_options). Throws std::invalid_argument for a
+// bad option.
+struct WeldedTriangleProps {
+  MassProperties mass;
+  TopologyReport topology;
+};
+WeldedTriangleProps analyze_welded_triangles(const WeldedTriangles& mesh, Vec3d reference,
+                                             const MassOptions& mass_options,
+                                             const TopologyOptions& topology_options,
+                                             bool single_precision);
+
 }  // namespace pgamesh

@@ -59,4 +59,11 @@ WeldedTriangles weld_binary_stl(const BinaryStlView& view, const std::string& na
 MassProperties mass_properties(const WeldedTriangles& mesh, Vec3d reference,
                                const MassOptions& options, bool single_precision);
 
+// The mass properties of the welded triangles from their sums about `reference` (as
+// mass_properties above accumulates them; for a pass that accumulates them along with other
+// work): counts and the float32 warning as above.
+MassProperties mass_properties_from_welded_sums(const WeldedTriangles& mesh,
+                                                const BoundarySums& sums, Vec3d reference,
+                                                const MassOptions& options, bool single_precision);
+
 }  // namespace pgamesh
