@@ -1,7 +1,9 @@
-// Internal: transparent huge pages for the big, randomly accessed arrays of the weld and the
-// topology pass (hash slots, per-vertex and per-face arrays of tens of MB). Probing such an array
-// at random misses the TLB on nearly every access with 4 KiB pages; with 2 MiB pages a 64 MiB
-// array needs only 32 TLB entries. THP is often in `madvise` mode
+// Internal: transparent huge pages for the weld's hash tables (weld_table.hpp: tens of MB, probed
+// at random). Probing such an array misses the TLB on nearly every access with 4 KiB pages; with
+// 2 MiB pages a 64 MiB table needs only 32 TLB entries. Measured on the 2-core VM (5·10^6-triangle
+// STL): the weld's CPU time drops by about a fifth. Huge pages are not used for the other arrays:
+// there the kernel's zeroing of fresh 2 MiB pages cost more CPU than the TLB misses saved. THP is
+// often in `madvise` mode
 // (/sys/kernel/mm/transparent_hugepage/enabled), where only ranges marked MADV_HUGEPAGE get them.
 #pragma once
 

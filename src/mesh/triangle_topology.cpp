@@ -2,8 +2,7 @@
 
 #include <algorithm>
 #include <array>
-#include <exception>
-#include <thread>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -11,13 +10,13 @@
 #include "pgamesh/geometry/chunked_sums.hpp"
 #include "pgamesh/mesh/boundary_loops.hpp"
 #include "topology_parts.hpp"
+#include "two_threads.hpp"
+#include "uninitialized_array.hpp"
 #include "union_find.hpp"
 
 namespace pgamesh {
 
 namespace {
-
-using detail::find_root;
 
 // An edge that is not used exactly twice in opposite directions, kept until the components are
 // known.
@@ -27,7 +26,7 @@ struct OddEdge {
 
 // What the edge pass finds.
 struct EdgePass {
-  std::size_t edges = 0, collapsed_faces = 0, unreferenced_vertices = 0;
+  std::size_t edges = 0, collapsed_faces = 0;
   std::vector<std::uint32_t> component;  // face → component (numbered by lowest face) or no_edge
   std::vector<ComponentSummary> components;                         // first_face and faces
   std::vector<OddEdge> odd;                                         // in edge order
@@ -53,39 +52,22 @@ std::size_t unreferenced_vertices(const WeldedTriangles& mesh) {
   return static_cast<std::size_t>(std::count(referenced.begin(), referenced.end(), false));
 }
 
-EdgePass edge_pass(const WeldedTriangles& mesh) {
-  EdgePass out;
-  const std::size_t face_count = mesh.triangle_count();
-  const std::size_t vertex_count = mesh.positions.size();
-  const std::uint32_t* corner = mesh.corners.data();
-  // Counting sort of the half-edges of non-collapsed triangles by their lower end; `start` first
-  // counts, then (after the fill, shifted back) holds each vertex's bucket start.
-  std::vector<std::uint32_t> start(vertex_count + 1, 0);
-  out.unreferenced_vertices = unreferenced_vertices(mesh);
-  for (std::size_t f = 0; f < face_count; ++f) {
-    if (collapsed(corner, f)) {
-      ++out.collapsed_faces;
-      continue;
-    }
-    for (std::uint32_t h = static_cast<std::uint32_t>(3 * f); h < 3 * f + 3; ++h)
-      ++start[std::min(corner[h], head(corner, h)) + 1];
-  }
-  for (std::size_t v = 0; v < vertex_count; ++v) start[v + 1] += start[v];
-  std::vector<std::uint32_t> bucket(start[vertex_count]);
-  for (std::size_t f = 0; f < face_count; ++f) {
-    if (collapsed(corner, f)) continue;
-    for (std::uint32_t h = static_cast<std::uint32_t>(3 * f); h < 3 * f + 3; ++h)
-      bucket[start[std::min(corner[h], head(corner, h))]++] = h;  // ascending within a bucket
-  }
-  for (std::size_t v = vertex_count; v > 0; --v) start[v] = start[v - 1];
-  start[0] = 0;
+// What one part of the edge pass finds among the edges of its range of lower ends.
+struct EdgePart {
+  std::size_t edges = 0;
+  std::vector<OddEdge> odd;                                         // in edge order
+  std::vector<std::uint32_t> sides;                                 // boundary half-edges
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> duplicates;  // (face, earlier face)
+};
 
-  // Each vertex's bucket grouped by upper end: one group per edge, edges in (v0, v1) order.
-  std::vector<std::uint32_t> parent(face_count);
-  for (std::size_t f = 0; f < face_count; ++f) parent[f] = static_cast<std::uint32_t>(f);
+// The edges whose lower end is in [v_begin, v_end): each vertex's bucket (its half-edges, in
+// ascending order, bucket[start[v], start[v + 1])) grouped by upper end, one group per edge, edges
+// in (v0, v1) order; the faces on each edge united in `parent`, shared with the other part.
+void group_edges(const std::uint32_t* corner, const std::uint32_t* start,
+                 const std::uint32_t* bucket, std::uint32_t v_begin, std::uint32_t v_end,
+                 std::uint32_t* parent, EdgePart& out) {
   detail::EdgeGroup group;  // (upper end, half-edge)
-  std::size_t edge_count = 0;
-  for (std::uint32_t v = 0; v < vertex_count; ++v) {
+  for (std::uint32_t v = v_begin; v < v_end; ++v) {
     group.clear();
     for (std::uint32_t i = start[v]; i < start[v + 1]; ++i) {
       const std::uint32_t h = bucket[i];
@@ -96,17 +78,13 @@ EdgePass edge_pass(const WeldedTriangles& mesh) {
       const std::uint32_t upper = group[i].first;
       std::size_t end = i + 1;
       while (end < group.size() && group[end].first == upper) ++end;
-      ++edge_count;
+      ++out.edges;
       const std::uint32_t first_face = group[i].second / 3;
-      std::uint32_t forward = 0, root = find_root(parent, first_face);
+      std::uint32_t forward = 0, root = first_face;
       for (std::size_t j = i; j < end; ++j) {
         const std::uint32_t h = group[j].second;
         forward += corner[h] == v ? 1 : 0;
-        const std::uint32_t g = find_root(parent, h / 3);
-        if (g != root) {
-          parent[std::max(g, root)] = std::min(g, root);
-          root = std::min(g, root);
-        }
+        if (j > i) root = detail::unite_roots_shared(parent, root, h / 3);
         // Two triangles on this edge are the same vertex set when their third vertices agree;
         // each face is matched on its first side (k = 0) against the lower faces on it, the
         // lowest match first (the half-edges ascend), so each duplicate names the lowest copy.
@@ -127,9 +105,99 @@ EdgePass edge_pass(const WeldedTriangles& mesh) {
       i = end;
     }
   }
-  out.edges = edge_count;
-  bucket = {};
+}
+
+// The lower end of half-edge h (edges are bucketed by it).
+inline std::uint32_t lower_end(const std::uint32_t* corner, std::uint32_t h) {
+  return std::min(corner[h], head(corner, h));
+}
+
+// The edge pass, its work cut in two parts that run at once when `parallel`: the faces' halves
+// for the counting sort, the vertices' halves (by half-edge count) for the grouping. The union–
+// find is shared through atomic operations (union_find.hpp); everything else each part writes is
+// its own, and the parts' findings are joined in vertex order — the result of one sequential pass.
+EdgePass edge_pass(const WeldedTriangles& mesh, bool parallel) {
+  EdgePass out;
+  const std::size_t face_count = mesh.triangle_count();
+  const std::size_t vertex_count = mesh.positions.size();
+  const std::uint32_t* corner = mesh.corners.data();
+  const std::size_t face_split = face_count / 2;
+
+  // Counting sort of the half-edges of non-collapsed triangles by their lower end, each half of
+  // the faces counted into its own array; within a bucket the first half's half-edges come
+  // first, so every bucket ascends.
+  std::vector<std::uint32_t> start, second_cursor;  // counts first, then fill cursors
+  std::size_t collapsed_faces[2] = {0, 0};
+  auto count = [&](int part, std::uint32_t* counts) {
+    const std::size_t begin = part == 0 ? 0 : face_split, end = part == 0 ? face_split : face_count;
+    for (std::size_t f = begin; f < end; ++f) {
+      if (collapsed(corner, f)) {
+        ++collapsed_faces[part];
+        continue;
+      }
+      for (std::uint32_t h = static_cast<std::uint32_t>(3 * f); h < 3 * f + 3; ++h)
+        ++counts[lower_end(corner, h)];
+    }
+  };
+  detail::run_both(
+      parallel,
+      [&] {
+        start.assign(vertex_count + 1, 0);
+        count(0, start.data());
+      },
+      [&] {
+        second_cursor.assign(vertex_count + 1, 0);
+        count(1, second_cursor.data());
+      });
+  out.collapsed_faces = collapsed_faces[0] + collapsed_faces[1];
+  std::uint32_t total = 0;
+  for (std::size_t v = 0; v <= vertex_count; ++v) {
+    const std::uint32_t first = start[v], second = second_cursor[v];
+    start[v] = total;
+    second_cursor[v] = total + first;
+    total += first + second;
+  }
+  std::unique_ptr<std::uint32_t[]> bucket = detail::uninitialized_array<std::uint32_t>(total);
+  auto fill = [&](int part, std::uint32_t* cursor) {
+    const std::size_t begin = part == 0 ? 0 : face_split, end = part == 0 ? face_split : face_count;
+    for (std::size_t f = begin; f < end; ++f) {
+      if (collapsed(corner, f)) continue;
+      for (std::uint32_t h = static_cast<std::uint32_t>(3 * f); h < 3 * f + 3; ++h)
+        bucket[cursor[lower_end(corner, h)]++] = h;
+    }
+  };
+  detail::run_both(
+      parallel, [&] { fill(0, start.data()); }, [&] { fill(1, second_cursor.data()); });
+  // The second cursor has stopped at each bucket's end, the next one's start.
+  start[0] = 0;
+  for (std::size_t v = 0; v < vertex_count; ++v) start[v + 1] = second_cursor[v];
+  second_cursor = {};
+
+  // Each part groups the buckets of about half the half-edges.
+  std::vector<std::uint32_t> parent;
+  parent.resize(face_count);
+  for (std::size_t f = 0; f < face_count; ++f) parent[f] = static_cast<std::uint32_t>(f);
+  const auto vertex_split = static_cast<std::uint32_t>(
+      std::lower_bound(start.begin(), start.begin() + static_cast<std::ptrdiff_t>(vertex_count),
+                       total / 2) -
+      start.begin());
+  EdgePart low, high;
+  detail::run_both(
+      parallel,
+      [&] { group_edges(corner, start.data(), bucket.get(), 0, vertex_split, parent.data(), low); },
+      [&] {
+        group_edges(corner, start.data(), bucket.get(), vertex_split,
+                    static_cast<std::uint32_t>(vertex_count), parent.data(), high);
+      });
+  bucket.reset();
   start = {};
+  out.edges = low.edges + high.edges;
+  out.odd = std::move(low.odd);
+  out.odd.insert(out.odd.end(), high.odd.begin(), high.odd.end());
+  out.sides = std::move(low.sides);
+  out.sides.insert(out.sides.end(), high.sides.begin(), high.sides.end());
+  out.duplicates = std::move(low.duplicates);
+  out.duplicates.insert(out.duplicates.end(), high.duplicates.begin(), high.duplicates.end());
 
   // Components numbered by their lowest face. Every parent pointer points down (parent[f] ≤ f,
   // equal at a root) and stays within its set, so one ascending pass overwrites the parent array
@@ -205,38 +273,25 @@ WeldedTriangleProps analyze_welded_triangles(const WeldedTriangles& mesh, Vec3d 
   const detail::WeldedFaces faces{mesh.positions, mesh.representative, mesh.corners, {}};
   detail::TopologyTally tally(r, faces, options);
 
-  // The face pass needs no edges: a second thread runs it while this one runs the edge pass.
-  // Each pass writes only its own data, so the result is the same as in one thread.
+  // The face pass needs no edges: a thread of its own runs it while the edge pass runs on two
+  // more (the cores share the three). Each pass writes only its own data, so the result is the
+  // same as in one thread.
+  const bool parallel = face_count >= faces_per_thread;
   BoundarySums sums;
-  auto face_work = [&] { sums = face_pass(mesh, reference, tally); };
+  std::size_t unreferenced = 0;
   EdgePass edges;
-  if (face_count < faces_per_thread) {
-    face_work();
-    edges = edge_pass(mesh);
-  } else {
-    std::exception_ptr face_error;
-    std::thread face_thread([&] {
-      try {
-        face_work();
-      } catch (...) {
-        face_error = std::current_exception();
-      }
-    });
-    try {
-      edges = edge_pass(mesh);
-    } catch (...) {
-      face_thread.join();
-      throw;
-    }
-    face_thread.join();
-    if (face_error) std::rethrow_exception(face_error);
-  }
+  detail::run_both(
+      parallel, [&] { edges = edge_pass(mesh, parallel); },
+      [&] {
+        sums = face_pass(mesh, reference, tally);
+        unreferenced = unreferenced_vertices(mesh);  // here rather than in the longer edge pass
+      });
   props.mass =
       mass_properties_from_welded_sums(mesh, sums, reference, mass_options, single_precision);
 
   r.edges = edges.edges;
   r.collapsed_faces = edges.collapsed_faces;
-  r.unreferenced_vertices = edges.unreferenced_vertices;
+  r.unreferenced_vertices = unreferenced;
   tally.components = std::move(edges.components);
   detail::tally_component_sums(tally, edges.component);
   for (const OddEdge& e : edges.odd)

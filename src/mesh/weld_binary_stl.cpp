@@ -5,12 +5,11 @@
 #include <array>
 #include <bit>
 #include <cstring>
-#include <exception>
-#include <thread>
 
 #include "page_release.hpp"
 #include "pgamesh/input_error.hpp"
 #include "pgamesh/mesh/welded_triangles.hpp"
+#include "two_threads.hpp"
 #include "weld_table.hpp"
 
 namespace pgamesh {
@@ -79,8 +78,9 @@ void weld_range(const BinaryStlView& view, std::size_t first, std::size_t last,
   out.keys.reserve(n / 4 + 16);
   out.first_vertex.reserve(n / 4 + 16);
 
-  // The table is larger than the caches: hash a few vertices ahead and prefetch their slots.
-  constexpr std::size_t ahead = 16;
+  // The table is larger than the caches: hash a few vertices ahead and prefetch their slots, and
+  // half as far ahead, their first slot's key (a probe's two memory accesses, both hidden).
+  constexpr std::size_t ahead = 16, key_ahead = 8;
   std::array<std::uint64_t, 32> ring{};
   std::array<Key, 32> ring_key{};
   auto record = [&](std::size_t i) { return view.records + stl_record_bytes * (i / 3); };
@@ -96,6 +96,7 @@ void weld_range(const BinaryStlView& view, std::size_t first, std::size_t last,
       load(i + ahead);
       __builtin_prefetch(out.table.slot_address(ring[(i + ahead) & 31]));
     }
+    if (i + key_ahead < last) out.table.prefetch_key(ring[(i + key_ahead) & 31], out.keys);
     bool inserted = false;
     corners[i - first] =
         out.table.find_or_insert(ring_key[i & 31], ring[i & 31], out.keys, inserted);
@@ -110,6 +111,24 @@ void weld_range(const BinaryStlView& view, std::size_t first, std::size_t last,
     }
   }
   if (release_records) release_pages(released, record(last - 1) + stl_record_bytes);
+}
+
+// found[j] = the id of keys[j] in the table of `low`, or KeyTable::none, for j in [begin, end).
+// Hashes a few keys ahead with their slots and keys prefetched, as in the weld.
+void find_in_range(const RangeWeld& low, const std::vector<Key>& keys, std::size_t begin,
+                   std::size_t end, std::uint32_t* found) {
+  constexpr std::size_t ahead = 16, key_ahead = 8;
+  std::array<std::uint64_t, 32> ring{};
+  for (std::size_t j = begin; j < std::min(begin + ahead, end); ++j)
+    ring[j & 31] = hash_of(keys[j]);
+  for (std::size_t j = begin; j < end; ++j) {
+    if (j + ahead < end) {
+      ring[(j + ahead) & 31] = hash_of(keys[j + ahead]);
+      __builtin_prefetch(low.table.slot_address(ring[(j + ahead) & 31]));
+    }
+    if (j + key_ahead < end) low.table.prefetch_key(ring[(j + key_ahead) & 31], low.keys);
+    found[j] = low.table.find(keys[j], ring[j & 31], low.keys);
+  }
 }
 
 // Records below which a second thread does not pay for the merge.
@@ -133,52 +152,35 @@ WeldedTriangles weld_binary_stl(const BinaryStlView& view, const std::string& na
   // first-occurrence order — the numbering and representatives of one sequential pass.
   RangeWeld low, high;
   const std::size_t split = view.count >= 2 * records_per_thread ? 3 * (view.count / 2) : n;
-  if (split == n) {
-    weld_range(view, 0, n, w.corners.data(), release_records, low);
-  } else {
-    std::exception_ptr high_error;
-    std::thread high_thread([&] {
-      try {
-        weld_range(view, split, n, w.corners.data() + split, release_records, high);
-      } catch (...) {
-        high_error = std::current_exception();
-      }
-    });
-    try {
-      weld_range(view, 0, split, w.corners.data(), release_records, low);
-    } catch (...) {
-      high_thread.join();
-      throw;
-    }
-    high_thread.join();
-    if (high_error) std::rethrow_exception(high_error);
-  }
+  detail::run_both(
+      split != n, [&] { weld_range(view, 0, split, w.corners.data(), release_records, low); },
+      [&] {
+        if (split != n) weld_range(view, split, n, w.corners.data() + split, release_records, high);
+      });
   // A NaN or infinity: name the first one, with its byte offset (throws).
   if (!low.finite || !high.finite) check_binary_stl_finite(view, name);
 
   if (split != n) {
+    // The second half's classes looked up in the first half's table, each half of them on a
+    // thread (the table is only read); those not found are numbered after the first half's.
     const std::size_t m = high.keys.size();
     std::vector<std::uint32_t> global(m);
-    // Hashes a few keys ahead with their slots prefetched, as in the weld.
-    constexpr std::size_t ahead = 16;
-    std::array<std::uint64_t, 32> ring{};
-    for (std::size_t j = 0; j < std::min(ahead, m); ++j) ring[j & 31] = hash_of(high.keys[j]);
+    detail::run_both(
+        true, [&] { find_in_range(low, high.keys, 0, m / 2, global.data()); },
+        [&] { find_in_range(low, high.keys, m / 2, m, global.data()); });
     for (std::size_t j = 0; j < m; ++j) {
-      if (j + ahead < m) {
-        ring[(j + ahead) & 31] = hash_of(high.keys[j + ahead]);
-        __builtin_prefetch(low.table.slot_address(ring[(j + ahead) & 31]));
-      }
-      const std::uint32_t id = low.table.find(high.keys[j], ring[j & 31], low.keys);
-      if (id != KeyTable::none) {
-        global[j] = id;
-      } else {
-        global[j] = static_cast<std::uint32_t>(low.keys.size());
-        low.keys.push_back(high.keys[j]);
-        low.first_vertex.push_back(high.first_vertex[j]);
-      }
+      if (global[j] != KeyTable::none) continue;
+      global[j] = static_cast<std::uint32_t>(low.keys.size());
+      low.keys.push_back(high.keys[j]);
+      low.first_vertex.push_back(high.first_vertex[j]);
     }
     high = RangeWeld{};
-    for (std::size_t c = split; c < n; ++c) w.corners[c] = global[w.corners[c]];
+    auto renumber = [&](std::size_t begin, std::size_t end) {
+      for (std::size_t c = begin; c < end; ++c) w.corners[c] = global[w.corners[c]];
+    };
+    const std::size_t mid = split + (n - split) / 2;
+    detail::run_both(
+        true, [&] { renumber(split, mid); }, [&] { renumber(mid, n); });
   }
   low.table = KeyTable(0);
 

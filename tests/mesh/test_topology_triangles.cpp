@@ -217,6 +217,19 @@ TEST(TopologyTriangles, LargeMeshesTakeTheTwoThreadPathAndAgree) {
   EXPECT_GT(two.inconsistent_edges, 0u);
 }
 
+TEST(TopologyTriangles, LargeSoupsTakeTheParallelEdgePassAndAgree) {
+  // 20 000 random triangles on 35 vertices: two threads count, fill and group the half-edges
+  // (every vertex a large fan, the split between the threads inside the vertex range) and share
+  // one union–find; the report must be the sequential polygon pass's.
+  for (std::uint32_t seed = 1; seed <= 2; ++seed) {
+    SCOPED_TRACE(seed);
+    const TopologyReport r = expect_passes_agree(grid_soup(seed, 20000));
+    EXPECT_GT(r.nonmanifold_edges, 0u);
+    EXPECT_GT(r.duplicated_faces, 0u);
+    EXPECT_GT(r.collapsed_faces, 0u);
+  }
+}
+
 // The one-pass mass properties and topology against mass_properties and analyze_welded_triangles
 // called apart: the same bits, on soups (one thread, one chunk) and on a large damaged mesh far
 // from the origin (the face pass on its own thread, many chunks of chunked_sums).
