@@ -28,10 +28,15 @@ inline std::uint32_t load_le32(const unsigned char* p) {
   return u;
 }
 
-// The key with −0 folded to +0 (the bits of −0 are 0x80000000), so that the two zeros weld while
-// every other value welds only with itself.
+// A coordinate's bits with −0 folded to +0 (the bits of −0 are 0x80000000), so that the two zeros
+// weld while every other value welds only with itself.
+inline std::uint32_t folded(std::uint32_t u) {
+  return u == 0x80000000u ? 0u : u;
+}
+
+// The key with every coordinate folded.
 inline Key folded(Key k) {
-  for (std::uint32_t& u : k) u = u == 0x80000000u ? 0u : u;
+  for (std::uint32_t& u : k) u = folded(u);
   return k;
 }
 
@@ -56,7 +61,13 @@ inline bool vertex_key(const unsigned char* r, int k, Key& key) {
 // Keys keep their own bits (the representative's coordinates, −0 included) and compare folded.
 struct RecordTraits {
   static std::uint64_t hash(const Key& k) { return hash_of(k); }
-  static bool same(const Key& a, const Key& b) { return folded(a) == folded(b); }
+  // Coordinate by coordinate, in registers: comparing folded copies of the arrays made the
+  // compiler store them and reload 8 bytes spanning two 4-byte stores, a store-forwarding stall
+  // on every probe.
+  static bool same(const Key& a, const Key& b) {
+    return folded(a[0]) == folded(b[0]) && folded(a[1]) == folded(b[1]) &&
+           folded(a[2]) == folded(b[2]);
+  }
 };
 using KeyTable = detail::WeldTable<Key, RecordTraits>;
 
