@@ -46,10 +46,10 @@ class WeldTable {
   // Prefetches the key that the probe for hash h compares first, when the first slot's tag
   // matches: the probe's second memory access (the slot itself should have been prefetched a few
   // steps earlier, via slot_address, so that reading it here does not stall).
-  void prefetch_key(std::uint64_t h, const std::vector<Key>& keys) const {
+  template <class Keys>
+  void prefetch_key(std::uint64_t h, const Keys& keys) const {
     const std::uint64_t s = slots_[h & mask_];
-    if (s != 0 && (s >> 32) == (h >> 32))
-      __builtin_prefetch(keys.data() + ((s & 0xffffffffULL) - 1));
+    if (s != 0 && (s >> 32) == (h >> 32)) __builtin_prefetch(&keys[(s & 0xffffffffULL) - 1]);
   }
 
   // The id of `k` (hash h) among `keys`, or none.
