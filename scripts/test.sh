@@ -15,7 +15,7 @@ cmake --preset release > /dev/null
 cmake --build --preset release -j "$jobs"
 ctest --preset release -j "$jobs"
 
-if [ -x build/release/pgamesh ] && build/release/pgamesh serve --help > /dev/null 2>&1; then
+if [ -x build/release/pgamesh-serve ]; then
   echo "== browser tests (pgamesh serve: API over loopback, the page in headless chromium)"
   PGAMESH_CLI=build/release/pgamesh timeout --kill-after=10 300 node --test tests/viewer/
 fi

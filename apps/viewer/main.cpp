@@ -1,0 +1,78 @@
+// `pgamesh-serve`: the executable behind `pgamesh serve [FILE...] [options]`
+// (apps/cli/cmd_serve.cpp starts it with the command's arguments). Reads the options and runs the
+// server (server/server.hpp, docs/viewer.md).
+#include <charconv>
+#include <cstdio>
+#include <string>
+#include <string_view>
+
+#include "serve_help.hpp"
+#include "server.hpp"
+
+namespace {
+
+// "64M" -> 67108864; false when the text is not a positive size.
+bool parse_size(std::string_view text, std::size_t& out) {
+  std::size_t value = 0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (ec != std::errc() || value == 0) return false;
+  std::string_view rest(end, text.data() + text.size() - end);
+  int shift = 0;
+  if (rest == "K" || rest == "k")
+    shift = 10;
+  else if (rest == "M" || rest == "m")
+    shift = 20;
+  else if (rest == "G" || rest == "g")
+    shift = 30;
+  else if (!rest.empty())
+    return false;
+  if (value > (std::size_t{1} << 40) >> shift) return false;  // at most 1 TiB
+  out = value << shift;
+  return true;
+}
+
+bool parse_port(std::string_view text, int& out) {
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), out);
+  return ec == std::errc() && end == text.data() + text.size() && out >= 0 && out <= 65535;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using pgamesh::cli::print_serve_help;
+  pgamesh::viewer::ServerOptions options;
+  options.web_dir = PGAMESH_VIEWER_WEB_DIR;
+  options.bundled_dir = PGAMESH_VIEWER_MESHES_DIR;
+  for (int i = 1; i < argc; ++i) {
+    const std::string_view arg = argv[i];
+    const bool has_value = i + 1 < argc;
+    if (arg == "--help" || arg == "-h") {
+      print_serve_help(stdout);
+      return 0;
+    } else if (arg == "--port" && has_value) {
+      if (!parse_port(argv[++i], options.port)) {
+        std::fprintf(stderr, "pgamesh serve: --port wants 0..65535, got '%s'\n", argv[i]);
+        return 2;
+      }
+    } else if (arg == "--host" && has_value) {
+      options.host = argv[++i];
+    } else if (arg == "--max-upload" && has_value) {
+      if (!parse_size(argv[++i], options.max_upload)) {
+        std::fprintf(stderr, "pgamesh serve: --max-upload wants a size like 64M, got '%s'\n",
+                     argv[i]);
+        return 2;
+      }
+    } else if (arg == "--assets" && has_value) {
+      options.web_dir = argv[++i];
+    } else if (arg == "--quiet") {
+      options.log_requests = false;
+    } else if (!arg.empty() && arg[0] == '-') {
+      std::fprintf(stderr, "pgamesh serve: unknown option or missing value: '%s'\n\n", argv[i]);
+      print_serve_help(stderr);
+      return 2;
+    } else {
+      options.files.emplace_back(arg);
+    }
+  }
+  return pgamesh::viewer::run_server(options);
+}
