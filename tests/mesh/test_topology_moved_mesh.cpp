@@ -12,11 +12,14 @@
 #include "pgamesh/mesh/weld.hpp"
 #include "pgamesh/mesh/welded_triangles.hpp"
 #include "support/read_helpers.hpp"
+#include "support/same_topology.hpp"
 #include "support/solids.hpp"
 #include "topology_test_meshes.hpp"
 
 namespace pgamesh {
 namespace {
+
+using test::expect_same_report;
 
 // Doubles compared bit for bit: the two calls must run the same arithmetic.
 void expect_bits(double a, double b, const char* what) {
@@ -24,86 +27,6 @@ void expect_bits(double a, double b, const char* what) {
 }
 void expect_bits(Vec3d a, Vec3d b, const char* what) {
   for (int k = 0; k < 3; ++k) expect_bits(a[k], b[k], what);
-}
-
-void expect_same_edges(const std::vector<EdgeLocation>& a, const std::vector<EdgeLocation>& b) {
-  ASSERT_EQ(a.size(), b.size());
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    EXPECT_EQ(a[i].face, b[i].face);
-    EXPECT_EQ(a[i].vertex0, b[i].vertex0);
-    EXPECT_EQ(a[i].vertex1, b[i].vertex1);
-    EXPECT_EQ(a[i].face_count, b[i].face_count);
-    expect_bits(a[i].p0, b[i].p0, "edge p0");
-    expect_bits(a[i].p1, b[i].p1, "edge p1");
-  }
-}
-
-void expect_same_faces(const std::vector<FaceLocation>& a, const std::vector<FaceLocation>& b) {
-  ASSERT_EQ(a.size(), b.size());
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    EXPECT_EQ(a[i].face, b[i].face);
-    EXPECT_EQ(a[i].same_as, b[i].same_as);
-    expect_bits(a[i].centroid, b[i].centroid, "face centroid");
-    expect_bits(a[i].area, b[i].area, "face area");
-  }
-}
-
-void expect_same_report(const TopologyReport& a, const TopologyReport& b) {
-  EXPECT_EQ(a.faces, b.faces);
-  EXPECT_EQ(a.triangles, b.triangles);
-  EXPECT_EQ(a.input_vertices, b.input_vertices);
-  EXPECT_EQ(a.vertices, b.vertices);
-  EXPECT_EQ(a.merged_vertices, b.merged_vertices);
-  EXPECT_EQ(a.unreferenced_vertices, b.unreferenced_vertices);
-  expect_bits(a.weld_tolerance, b.weld_tolerance, "weld_tolerance");
-  expect_bits(a.weld_max_moved, b.weld_max_moved, "weld_max_moved");
-  EXPECT_EQ(a.edges, b.edges);
-  EXPECT_EQ(a.boundary_edges, b.boundary_edges);
-  EXPECT_EQ(a.nonmanifold_edges, b.nonmanifold_edges);
-  EXPECT_EQ(a.inconsistent_edges, b.inconsistent_edges);
-  EXPECT_EQ(a.closed, b.closed);
-  EXPECT_EQ(a.orientation_consistent, b.orientation_consistent);
-  expect_bits(a.reference_point, b.reference_point, "reference_point");
-  expect_bits(a.area, b.area, "area");
-  expect_bits(a.volume, b.volume, "volume");
-  expect_bits(a.carrier_sum.e0, b.carrier_sum.e0, "carrier_sum e0");
-  expect_bits(a.carrier_sum.normal(), b.carrier_sum.normal(), "carrier_sum normal");
-  expect_bits(a.gap_vector, b.gap_vector, "gap_vector");
-  expect_bits(a.gap_area, b.gap_area, "gap_area");
-  expect_bits(a.volume_min, b.volume_min, "volume_min");
-  expect_bits(a.volume_max, b.volume_max, "volume_max");
-  expect_bits(a.loops_area, b.loops_area, "loops_area");
-  ASSERT_EQ(a.boundary_loops.size(), b.boundary_loops.size());
-  for (std::size_t i = 0; i < a.boundary_loops.size(); ++i) {
-    EXPECT_EQ(a.boundary_loops[i].half_edges, b.boundary_loops[i].half_edges);
-    EXPECT_EQ(a.boundary_loops[i].closed, b.boundary_loops[i].closed);
-    expect_bits(a.boundary_loops[i].vector_area, b.boundary_loops[i].vector_area, "loop area");
-    expect_bits(a.boundary_loops[i].perimeter, b.boundary_loops[i].perimeter, "loop perimeter");
-  }
-  EXPECT_EQ(a.zero_area_faces, b.zero_area_faces);
-  EXPECT_EQ(a.collapsed_faces, b.collapsed_faces);
-  EXPECT_EQ(a.small_area_faces, b.small_area_faces);
-  EXPECT_EQ(a.duplicated_faces, b.duplicated_faces);
-  EXPECT_EQ(a.duplicated_area_faces, b.duplicated_area_faces);
-  expect_same_faces(a.zero_area_list, b.zero_area_list);
-  expect_same_faces(a.small_area_list, b.small_area_list);
-  expect_same_faces(a.duplicated_list, b.duplicated_list);
-  expect_same_edges(a.boundary_edge_list, b.boundary_edge_list);
-  expect_same_edges(a.nonmanifold_edge_list, b.nonmanifold_edge_list);
-  expect_same_edges(a.inconsistent_edge_list, b.inconsistent_edge_list);
-  EXPECT_EQ(a.components, b.components);
-  EXPECT_EQ(a.closed_components, b.closed_components);
-  EXPECT_EQ(a.negative_components, b.negative_components);
-  ASSERT_EQ(a.component_list.size(), b.component_list.size());
-  for (std::size_t i = 0; i < a.component_list.size(); ++i) {
-    EXPECT_EQ(a.component_list[i].first_face, b.component_list[i].first_face);
-    EXPECT_EQ(a.component_list[i].faces, b.component_list[i].faces);
-    expect_bits(a.component_list[i].area, b.component_list[i].area, "component area");
-    expect_bits(a.component_list[i].volume, b.component_list[i].volume, "component volume");
-    EXPECT_EQ(a.component_list[i].closed, b.component_list[i].closed);
-  }
-  EXPECT_EQ(a.volume_valid, b.volume_valid);
-  EXPECT_EQ(a.notes, b.notes);
 }
 
 // Both calls on `mesh`; returns the report of the moved one.
