@@ -12,6 +12,7 @@
 #include <cstddef>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "pgamesh/algebra/clifford/blade.hpp"
@@ -483,15 +484,20 @@ Multivector<D> exp_by_angle_sums(const Multivector<D>& b, const Multivector<D>& 
   }
   const std::vector<double> nodes = doubled_nodes(y);
   auto width = [](double c) { return 0.5 * std::max(1.0, std::sqrt(std::abs(c))); };
-  const std::vector<double> cos_dd = clifford::divided_differences(
-      nodes, [](double x) { return clifford::cos_sinc_sqrt(x).cos_sqrt; },
-      [](double c, int n) { return clifford::cos_sinc_sqrt_taylor(c, n).cos_sqrt; }, width);
-  const std::vector<double> sinc_dd = clifford::divided_differences(
-      nodes, [](double x) { return clifford::cos_sinc_sqrt(x).sinc_sqrt; },
-      [](double c, int n) { return clifford::cos_sinc_sqrt_taylor(c, n).sinc_sqrt; }, width);
+  // cos√y and sin√y/√y in one table: one Taylor computation serves both
+  const std::array<std::vector<double>, 2> dd = clifford::divided_differences_of<2>(
+      nodes, std::vector<int>(nodes.size(), 0),
+      [](double x, int) {
+        const clifford::CosSincSqrt v = clifford::cos_sinc_sqrt(x);
+        return std::array<double, 2>{v.cos_sqrt, v.sinc_sqrt};
+      },
+      [](double c, int n, int) {
+        clifford::CosSincTaylor t = clifford::cos_sinc_sqrt_taylor(c, n);
+        return std::array<std::vector<double>, 2>{std::move(t.cos_sqrt), std::move(t.sinc_sqrt)};
+      },
+      [&width](double c, int) { return width(c); });
   const Multivector<D> y_element = -1.0 * b2;
-  return newton_form(y_element, nodes, cos_dd) +
-         geometric(newton_form(y_element, nodes, sinc_dd), b);
+  return newton_form(y_element, nodes, dd[0]) + geometric(newton_form(y_element, nodes, dd[1]), b);
 }
 
 // log of a normalised motor M of R(d,0,1), 4 ≤ d ≤ 7, without choosing planes: the inverse of
