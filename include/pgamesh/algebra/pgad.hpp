@@ -436,14 +436,64 @@ inline std::array<double, 3> squared_angles(const PlaneInvariants& p) {
   return mu;
 }
 
-// Σ_n coefficients[n] Π_(i<n) (Y − nodes[i]) for a Y that commutes with itself only — the Newton
-// form of a function of Y (clifford::divided_differences), by Horner's scheme.
+// Functions of Y = −B² (and of the even part E of a motor, itself cos√Y) live in grades 0, 4, 8:
+// the blade pairs of two such elements that land there. A product of two of them also has
+// grade-2 and grade-6 terms, but for commuting factors (polynomials in one Y) they cancel —
+// e_A e_B = −e_B e_A for grade-4 blades sharing 3 or 1 generators — so leaving them out is exact
+// and skips most of the dense product.
+struct BladePair {
+  BladeMask a, b;
+  signed char sign;
+};
 template <int D>
-Multivector<D> newton_form(const Multivector<D>& y, const std::vector<double>& nodes,
-                           const std::vector<double>& coefficients) {
-  std::size_t n = coefficients.size();
-  Multivector<D> r = scalar<D>(coefficients[n - 1]);
-  while (--n > 0) r = geometric(r, y - scalar<D>(nodes[n - 1])) + scalar<D>(coefficients[n - 1]);
+constexpr bool in_grades_0_4_8(BladeMask m) {
+  const int g = clifford::grade_of(m);
+  return g == 0 || g == 4 || g == 8;
+}
+template <int D>
+constexpr std::size_t commuting_pair_count() {
+  std::size_t n = 0;
+  for (BladeMask a = 0; a < Multivector<D>::size; ++a)
+    for (BladeMask b = 0; b < Multivector<D>::size; ++b)
+      if (in_grades_0_4_8<D>(a) && in_grades_0_4_8<D>(b) && in_grades_0_4_8<D>(a ^ b) &&
+          product_table<D>.gp[a][b] != 0)
+        ++n;
+  return n;
+}
+template <int D>
+constexpr auto make_commuting_pairs() {
+  std::array<BladePair, commuting_pair_count<D>()> pairs{};
+  std::size_t n = 0;
+  for (BladeMask a = 0; a < Multivector<D>::size; ++a)
+    for (BladeMask b = 0; b < Multivector<D>::size; ++b)
+      if (in_grades_0_4_8<D>(a) && in_grades_0_4_8<D>(b) && in_grades_0_4_8<D>(a ^ b) &&
+          product_table<D>.gp[a][b] != 0)
+        pairs[n++] = {a, b, product_table<D>.gp[a][b]};
+  return pairs;
+}
+template <int D>
+inline constexpr auto commuting_pairs = make_commuting_pairs<D>();
+
+// A B for commuting A, B of grades 0, 4, 8 (functions of one Y), over commuting_pairs only.
+template <int D>
+Multivector<D> commuting_product(const Multivector<D>& a, const Multivector<D>& b) {
+  Multivector<D> r{};
+  for (const BladePair& p : commuting_pairs<D>) r.c[p.a ^ p.b] += p.sign * a.c[p.a] * b.c[p.b];
+  return r;
+}
+
+// The Newton forms Σ_n coefficients[q][n] Π_(i<n) (Y − nodes[i]) of K functions of Y
+// (clifford::divided_differences_of), Y of grades 0, 4, 8: the basis products Π_(i<n) (Y − x_i)
+// are formed once and shared.
+template <int D, std::size_t K>
+std::array<Multivector<D>, K> newton_forms(const Multivector<D>& y, const std::vector<double>& nodes,
+                                           const std::array<std::vector<double>, K>& coefficients) {
+  std::array<Multivector<D>, K> r{};
+  Multivector<D> basis = scalar<D>(1);
+  for (std::size_t n = 0; n < nodes.size(); ++n) {
+    if (n > 0) basis = commuting_product(basis, y - scalar<D>(nodes[n - 1]));
+    for (std::size_t q = 0; q < K; ++q) r[q] += coefficients[q][n] * basis;
+  }
   return r;
 }
 
@@ -496,8 +546,9 @@ Multivector<D> exp_by_angle_sums(const Multivector<D>& b, const Multivector<D>& 
         return std::array<std::vector<double>, 2>{std::move(t.cos_sqrt), std::move(t.sinc_sqrt)};
       },
       [&width](double c, int) { return width(c); });
-  const Multivector<D> y_element = -1.0 * b2;
-  return newton_form(y_element, nodes, dd[0]) + geometric(newton_form(y_element, nodes, dd[1]), b);
+  const std::array<Multivector<D>, 2> f =
+      newton_forms(-1.0 * (grade(b2, 0) + grade(b2, 4)), nodes, dd);
+  return f[0] + geometric(f[1], b);
 }
 
 // log of a normalised motor M of R(d,0,1), 4 ≤ d ≤ 7, without choosing planes: the inverse of
@@ -527,7 +578,7 @@ Multivector<D> log_by_angle_sums(const Multivector<D>& m) {
     double p[5] = {4, 0, 0, 0, 0};  // power sums Σ_ε cos^n ω_ε
     Multivector<D> power = scalar<D>(1);
     for (int n = 1; n <= 4; ++n) {
-      power = geometric(power, e);
+      power = commuting_product(power, e);
       p[n] = 4 * power.c[0];
     }
     // Newton's identities: elementary symmetric functions of the four nodes
@@ -559,7 +610,7 @@ Multivector<D> log_by_angle_sums(const Multivector<D>& m) {
           if (nodes[i] == c[j]) branch[i] = static_cast<int>(shift >> j & 1u);
       const std::vector<double> dd =
           clifford::divided_differences(nodes, branch, value, taylor, width);
-      const Multivector<D> full = geometric(newton_form(e, nodes, dd), o);
+      const Multivector<D> full = geometric(newton_forms<D, 1>(e, nodes, {dd})[0], o);
       const Multivector<D> b = grade(full, 2);
       if constexpr (D <= 5) return b;
       if (norm(grade(full, 6)) + ideal_norm(grade(full, 6)) <= 1e-9 * (1 + norm(b) + ideal_norm(b)))
