@@ -486,7 +486,8 @@ Multivector<D> commuting_product(const Multivector<D>& a, const Multivector<D>& 
 // (clifford::divided_differences_of), Y of grades 0, 4, 8: the basis products Π_(i<n) (Y − x_i)
 // are formed once and shared.
 template <int D, std::size_t K>
-std::array<Multivector<D>, K> newton_forms(const Multivector<D>& y, const std::vector<double>& nodes,
+std::array<Multivector<D>, K> newton_forms(const Multivector<D>& y,
+                                           const std::vector<double>& nodes,
                                            const std::array<std::vector<double>, K>& coefficients) {
   std::array<Multivector<D>, K> r{};
   Multivector<D> basis = scalar<D>(1);

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstddef>
 #include <numbers>
+#include <utility>
 #include <vector>
 
 namespace pgamesh::clifford {
@@ -82,6 +83,18 @@ inline CosSincSqrt cos_sinc_sqrt(double y) {
   return {std::cos(r), std::sin(r) / r};
 }
 
+namespace detail {
+// The first n coefficients of p(x + z) for p(x) = Σ p_k x^k: a_m = Σ_(k≥m) p_k C(k, m) z^(k−m), by
+// repeated synthetic division by (x − z) (each pass is Horner's scheme; after pass m, p_m is a_m),
+// n passes of p.size() multiply-adds.
+inline std::vector<double> taylor_shift(std::vector<double> p, double z, std::size_t n) {
+  for (std::size_t m = 0; m < n && m < p.size(); ++m)
+    for (std::size_t k = p.size() - 1; k > m; --k) p[k - 1] += z * p[k];
+  p.resize(n, 0.0);
+  return p;
+}
+}  // namespace detail
+
 // Taylor coefficients a_0 … a_(count−1) of cos√y and of sin√y/√y about y = c: for |c| ≤ 4 by
 // re-centring their series about 0 (Σ (−y)^k/(2k)!, Σ (−y)^k/(2k+1)!; no cancellation there), for
 // c > 4 from the derivatives, which follow from C' = −S/2 and 2y S' = C − S:
@@ -105,23 +118,17 @@ inline CosSincTaylor cos_sinc_sqrt_taylor(double c, int count) {
     }
     return t;
   }
-  // a_m = Σ_(k≥m) b_k C(k, m) c^(k−m); terms fall like |c|^k/(2k)!, 40 beyond m are plenty.
+  // a_m = Σ_(k≥m) b_k C(k, m) c^(k−m) (detail::taylor_shift); terms fall like |c|^k/(2k)!, 40
+  // beyond m are plenty.
   const std::size_t kmax = n + 40;
-  double bc = 1, bs = 1;  // (−1)^k/(2k)!, (−1)^k/(2k+1)!
-  for (std::size_t k = 0; k <= kmax; ++k) {
-    // binom_pow[m] = C(k, m) c^(k−m) for m ≤ min(k, n−1), by m from k downwards
-    const std::size_t top = std::min(k, n - 1);
-    double term = 1;  // m = k
-    for (std::size_t m = k; m > top; --m) term *= c * static_cast<double>(m) / (k - m + 1.0);
-    for (std::size_t m = top + 1; m-- > 0;) {
-      t.cos_sqrt[m] += bc * term;
-      t.sinc_sqrt[m] += bs * term;
-      if (m > 0) term *= c * static_cast<double>(m) / (static_cast<double>(k - m) + 1.0);
-    }
-    bc *= -1.0 / ((2.0 * static_cast<double>(k) + 1) * (2.0 * static_cast<double>(k) + 2));
-    bs *= -1.0 / ((2.0 * static_cast<double>(k) + 2) * (2.0 * static_cast<double>(k) + 3));
+  std::vector<double> bc(kmax + 1), bs(kmax + 1);  // (−1)^k/(2k)!, (−1)^k/(2k+1)!
+  bc[0] = bs[0] = 1;
+  for (std::size_t k = 0; k < kmax; ++k) {
+    const double kd = static_cast<double>(k);
+    bc[k + 1] = bc[k] * (-1.0 / ((2 * kd + 1) * (2 * kd + 2)));
+    bs[k + 1] = bs[k] * (-1.0 / ((2 * kd + 2) * (2 * kd + 3)));
   }
-  return t;
+  return {detail::taylor_shift(std::move(bc), c, n), detail::taylor_shift(std::move(bs), c, n)};
 }
 
 // θ / sin θ as a function of c = cos θ (θ = acos c ∈ [0, π)): analytic for c > −1, including
@@ -163,24 +170,16 @@ inline std::vector<double> arc_taylor(double c0, double f0, double r, std::size_
 
 inline std::vector<double> angle_over_sine_taylor(double c0, int count) {
   const auto n = static_cast<std::size_t>(count);
-  std::vector<double> a(n, 0.0);
   if (c0 < -0.5) return detail::arc_taylor(c0, angle_over_sine_of_cosine(c0), 1.0, n);
   const double z = c0 - 1;
   // terms fall like (|z|/2)^k; stop when below 1e-20 of the leading one
   const double ratio = std::max(std::abs(z) / 2, 1e-3);
   const std::size_t kmax = n + static_cast<std::size_t>(std::ceil(-46.0 / std::log(ratio)));
-  double g = 1;
-  for (std::size_t k = 0; k <= kmax; ++k) {
-    const std::size_t top = std::min(k, n - 1);
-    double term = 1;  // C(k, m) z^(k−m) at m = k
-    for (std::size_t m = k; m > top; --m) term *= z * static_cast<double>(m) / (k - m + 1.0);
-    for (std::size_t m = top + 1; m-- > 0;) {
-      a[m] += g * term;
-      if (m > 0) term *= z * static_cast<double>(m) / (static_cast<double>(k - m) + 1.0);
-    }
-    g *= -(static_cast<double>(k) + 1) / (2.0 * static_cast<double>(k) + 3);
-  }
-  return a;
+  std::vector<double> g(kmax + 1);
+  g[0] = 1;
+  for (std::size_t k = 0; k < kmax; ++k)
+    g[k + 1] = g[k] * (-(static_cast<double>(k) + 1) / (2.0 * static_cast<double>(k) + 3));
+  return detail::taylor_shift(std::move(g), z, n);
 }
 
 // The next branch: (θ − 2π) / sin θ = h(c) − 2π / √(1 − c²) as a function of c = cos θ

@@ -21,7 +21,8 @@ inline int taylor_terms_beyond_order(double spread, double width) {
   if (spread <= 0) return 0;
   if (spread >= width) return at_full_width;
   constexpr double log_round_off = -36.04;  // ln 2^−52
-  const double terms = at_full_width / (1 + at_full_width * std::log(spread / width) / log_round_off);
+  const double terms =
+      at_full_width / (1 + at_full_width * std::log(spread / width) / log_round_off);
   return static_cast<int>(std::ceil(terms));
 }
 }  // namespace detail
