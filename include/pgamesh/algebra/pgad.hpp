@@ -446,18 +446,19 @@ struct BladePair {
   signed char sign;
 };
 template <int D>
-constexpr bool in_grades_0_4_8(BladeMask m) {
-  const int g = clifford::grade_of(m);
-  return g == 0 || g == 4 || g == 8;
+constexpr bool is_commuting_pair(BladeMask a, BladeMask b) {
+  auto in_grades_0_4_8 = [](BladeMask m) {
+    const int g = clifford::grade_of(m);
+    return g == 0 || g == 4 || g == 8;
+  };
+  return in_grades_0_4_8(a) && in_grades_0_4_8(b) && in_grades_0_4_8(a ^ b) &&
+         product_table<D>.gp[a][b] != 0;
 }
 template <int D>
 constexpr std::size_t commuting_pair_count() {
   std::size_t n = 0;
   for (BladeMask a = 0; a < Multivector<D>::size; ++a)
-    for (BladeMask b = 0; b < Multivector<D>::size; ++b)
-      if (in_grades_0_4_8<D>(a) && in_grades_0_4_8<D>(b) && in_grades_0_4_8<D>(a ^ b) &&
-          product_table<D>.gp[a][b] != 0)
-        ++n;
+    for (BladeMask b = 0; b < Multivector<D>::size; ++b) n += is_commuting_pair<D>(a, b);
   return n;
 }
 template <int D>
@@ -466,9 +467,7 @@ constexpr auto make_commuting_pairs() {
   std::size_t n = 0;
   for (BladeMask a = 0; a < Multivector<D>::size; ++a)
     for (BladeMask b = 0; b < Multivector<D>::size; ++b)
-      if (in_grades_0_4_8<D>(a) && in_grades_0_4_8<D>(b) && in_grades_0_4_8<D>(a ^ b) &&
-          product_table<D>.gp[a][b] != 0)
-        pairs[n++] = {a, b, product_table<D>.gp[a][b]};
+      if (is_commuting_pair<D>(a, b)) pairs[n++] = {a, b, product_table<D>.gp[a][b]};
   return pairs;
 }
 template <int D>
