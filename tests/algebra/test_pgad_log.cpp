@@ -8,6 +8,7 @@
 #include <numbers>
 #include <random>
 
+#include "pgad_engine_check.hpp"
 #include "pgamesh/algebra/clifford.hpp"
 #include "pgamesh/algebra/pgad.hpp"
 
@@ -143,15 +144,7 @@ void check_general(const char* name, std::uint64_t seed) {
   const auto alg = *clifford::make_algebra(name);
   std::mt19937_64 rng(seed);
   for (int trial = 0; trial < 20; ++trial) {
-    const auto b = random_bivector<D>(rng);
-    std::vector<clifford::Term> t;
-    for (clifford::BladeMask i = 0; i < b.size; ++i) t.push_back({i, b.c[i]});
-    const auto gb = clifford::from_terms(t);
-    const auto gm = clifford::exp(alg, gb);
-    const auto m = pgad::exp(b);
-    for (clifford::BladeMask i = 0; i < m.size; ++i) EXPECT_NEAR(gm[i], m.c[i], 1e-12) << name;
-    const auto gl = clifford::log(alg, gm);
-    for (clifford::BladeMask i = 0; i < b.size; ++i) EXPECT_NEAR(gl[i], b.c[i], 1e-9) << name;
+    test::expect_engine_exp_log_match_pgad(alg, random_bivector<D>(rng), 1e-9, name);
   }
 }
 

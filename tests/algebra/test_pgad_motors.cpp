@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "pgad_engine_check.hpp"
 #include "pgamesh/algebra/clifford.hpp"
 #include "pgamesh/algebra/pgad.hpp"
 
@@ -229,13 +230,7 @@ void check_general(const char* name, std::uint64_t seed) {
   for (int trial = 0; trial < 5; ++trial) {
     const auto b =
         trial == 0 ? bivector_with_angles<D>(rng, {0.6, 0.6, 0.6}) : random_bivector<D>(rng);
-    std::vector<clifford::Term> t;
-    for (clifford::BladeMask i = 0; i < b.size; ++i) t.push_back({i, b.c[i]});
-    const auto gm = clifford::exp(alg, clifford::from_terms(t));
-    const auto m = pgad::exp(b);
-    for (clifford::BladeMask i = 0; i < m.size; ++i) EXPECT_NEAR(gm[i], m.c[i], 1e-12) << name;
-    const auto gl = clifford::log(alg, gm);
-    for (clifford::BladeMask i = 0; i < b.size; ++i) EXPECT_NEAR(gl[i], b.c[i], 1e-11) << name;
+    test::expect_engine_exp_log_match_pgad(alg, b, 1e-11, name);
   }
 }
 
