@@ -198,8 +198,8 @@ void tally_edge(TopologyTally& t, std::uint32_t v0, std::uint32_t v1, std::uint3
   auto location = [&] {
     EdgeLocation loc;
     loc.face = face;
-    loc.vertex0 = t.mesh.representative[v0];
-    loc.vertex1 = t.mesh.representative[v1];
+    loc.vertex0 = t.mesh.input_vertex(v0);
+    loc.vertex1 = t.mesh.input_vertex(v1);
     loc.p0 = t.mesh.positions[v0];
     loc.p1 = t.mesh.positions[v1];
     loc.face_count = static_cast<std::uint32_t>(uses);

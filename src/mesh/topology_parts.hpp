@@ -19,7 +19,7 @@ namespace pgamesh::detail {
 // A welded mesh as the shared parts see it.
 struct WeldedFaces {
   std::span<const Vec3d> positions;               // welded vertex → coordinates
-  std::span<const std::uint32_t> representative;  // welded vertex → lowest input vertex
+  std::span<const std::uint32_t> representative;  // welded vertex → lowest input vertex; empty: w
   std::span<const std::uint32_t> corners;         // corner → welded vertex
   std::span<const std::uint32_t> face_offsets;    // CSR; empty when every face is a triangle
 
@@ -30,6 +30,9 @@ struct WeldedFaces {
     return face_offsets.empty() ? 3 : face_offsets[f + 1] - face_offsets[f];
   }
   Vec3d corner_position(std::uint32_t c) const { return positions[corners[c]]; }
+  std::uint32_t input_vertex(std::uint32_t w) const {
+    return representative.empty() ? w : representative[w];
+  }
 };
 
 // The sums a report is built from, face by face and edge by edge.

@@ -171,7 +171,7 @@ EdgePass edge_pass(const WeldedTriangles& mesh, bool parallel) {
   // The second cursor has stopped at each bucket's end, the next one's start.
   start[0] = 0;
   for (std::size_t v = 0; v < vertex_count; ++v) start[v + 1] = second_cursor[v];
-  second_cursor = {};
+  std::vector<std::uint32_t>().swap(second_cursor);  // `= {}` would keep its capacity
 
   // Each part groups the buckets of about half the half-edges.
   std::vector<std::uint32_t> parent;
@@ -190,7 +190,7 @@ EdgePass edge_pass(const WeldedTriangles& mesh, bool parallel) {
                     static_cast<std::uint32_t>(vertex_count), parent.data(), high);
       });
   bucket.reset();
-  start = {};
+  std::vector<std::uint32_t>().swap(start);
   out.edges = low.edges + high.edges;
   out.odd = std::move(low.odd);
   out.odd.insert(out.odd.end(), high.odd.begin(), high.odd.end());

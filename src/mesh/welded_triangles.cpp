@@ -43,7 +43,7 @@ WeldedTriangles weld_triangles(const Mesh& mesh, double tolerance) {
   w.corners.resize(mesh.corners.size());
   for (std::size_t c = 0; c < mesh.corners.size(); ++c)
     w.corners[c] = map.to_welded[mesh.corners[c]];
-  w.representative = std::move(map.representative);
+  if (map.merged != 0) w.representative = std::move(map.representative);
   return w;
 }
 
@@ -60,7 +60,8 @@ WeldedTriangles weld_triangles(Mesh&& mesh, double tolerance) {
   std::vector<std::uint32_t>().swap(map.to_welded);
   w.corners = std::move(mesh.corners);
   w.positions = std::move(mesh.vertices);
-  w.representative = std::move(map.representative);
+  if (map.merged != 0) w.representative = std::move(map.representative);
+  map = WeldMap{};
   mesh = Mesh{};
   return w;
 }

@@ -100,6 +100,39 @@ TEST(TopologyMovedMesh, WeldInPlace) {
   EXPECT_THROW(weld_triangles(std::move(bad)), std::out_of_range);
 }
 
+// The lowest index of a vertex at p's coordinates (the weld's representative, by brute force).
+std::uint32_t lowest_vertex_at(const Mesh& m, Vec3d p) {
+  for (std::uint32_t i = 0; i < m.vertices.size(); ++i)
+    if (m.vertices[i] == p) return i;
+  ADD_FAILURE() << "no vertex at the edge's end";
+  return 0;
+}
+
+TEST(TopologyMovedMesh, RepresentativesKeptOnlyWhenVerticesMerge) {
+  const Mesh cube = test::unit_cube();
+  for (const Mesh& m : {cube, test::unshared(cube)}) {
+    const bool merges = m.vertices.size() > 8;
+    const WeldedTriangles kept = weld_triangles(m);
+    const WeldedTriangles moved = weld_triangles(Mesh(m));
+    EXPECT_EQ(kept.representative.size(), merges ? 8u : 0u);
+    EXPECT_EQ(moved.representative.size(), merges ? 8u : 0u);
+    for (std::uint32_t w = 0; w < 8; ++w) {
+      EXPECT_EQ(kept.input_vertex(w), lowest_vertex_at(m, kept.positions[w]));
+      EXPECT_EQ(moved.input_vertex(w), kept.input_vertex(w));
+    }
+    // The boundary edges name input vertices either way: those of the removed face z = 1 (2).
+    const Mesh open = test::without_faces(m, {2});
+    const TopologyReport r = expect_same_topology(open);
+    ASSERT_EQ(r.boundary_edge_list.size(), 3u);
+    for (const EdgeLocation& e : r.boundary_edge_list) {
+      EXPECT_EQ(e.vertex0, lowest_vertex_at(open, e.p0));
+      EXPECT_EQ(e.vertex1, lowest_vertex_at(open, e.p1));
+      EXPECT_EQ(e.p0.z, 1.0);
+      EXPECT_EQ(e.p1.z, 1.0);
+    }
+  }
+}
+
 TEST(TopologyMovedMesh, TrianglesClosedOpenUnweldedFlippedDuplicated) {
   const Mesh cube = test::unit_cube();
   EXPECT_TRUE(expect_same_topology(cube).closed);

@@ -18,21 +18,29 @@
 namespace pgamesh {
 
 struct WeldedTriangles {
-  std::vector<Vec3d> positions;               // welded vertex → its representative's coordinates
-  std::vector<std::uint32_t> representative;  // welded vertex → its lowest input vertex index
-  std::vector<std::uint32_t> corners;         // three welded vertex indices per triangle
-  std::size_t input_vertices = 0;             // vertices before the weld
-  std::size_t merged = 0;                     // input − welded vertices
-  double max_moved = 0;                       // as in WeldMap
+  std::vector<Vec3d> positions;  // welded vertex → its representative's coordinates
+  // Welded vertex → its lowest input vertex index; left empty by weld_triangles when the weld
+  // merged nothing (then it is the identity, and an array as long as the positions would only
+  // cost memory at the topology pass's peak): read it through input_vertex().
+  std::vector<std::uint32_t> representative;
+  std::vector<std::uint32_t> corners;  // three welded vertex indices per triangle
+  std::size_t input_vertices = 0;      // vertices before the weld
+  std::size_t merged = 0;              // input − welded vertices
+  double max_moved = 0;                // as in WeldMap
   double tolerance = 0;
 
   std::size_t triangle_count() const { return corners.size() / 3; }
+  // The lowest input vertex that welded vertex w stands for.
+  std::uint32_t input_vertex(std::uint32_t w) const {
+    return representative.empty() ? w : representative[w];
+  }
 };
 
 // Whether every face of `mesh` is a triangle (and there is at least one face).
 bool all_triangles(const Mesh& mesh);
 
-// Welds a mesh whose faces are all triangles (weld_map of weld.hpp, same numbering). Throws
+// Welds a mesh whose faces are all triangles (weld_map of weld.hpp, same numbering; the
+// representatives left empty when nothing merged). Throws
 // std::invalid_argument when a face is not a triangle and std::out_of_range for a corner index
 // beyond the vertex list.
 WeldedTriangles weld_triangles(const Mesh& mesh, double tolerance = 0);
