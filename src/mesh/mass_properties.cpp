@@ -7,6 +7,7 @@
 #include <string>
 
 #include "pgamesh/geometry/chunked_sums.hpp"
+#include "pgamesh/mesh/face_sums.hpp"
 #include "pgamesh/mesh/reference_point.hpp"
 
 namespace pgamesh {
@@ -38,20 +39,8 @@ BoundarySums mesh_boundary_sums(const Mesh& mesh, Vec3d reference, unsigned thre
   check_corners(mesh);
   return chunked_sums(
       mesh.face_count(), threads, [&](BoundarySums& s, std::size_t begin, std::size_t end) {
-        for (std::size_t f = begin; f < end; ++f) {
-          const std::uint32_t* c = mesh.face(f);
-          const std::size_t n = mesh.face_size(f);
-          if (n == 3) {
-            add_triangle(s, mesh.vertices[c[0]] - reference, mesh.vertices[c[1]] - reference,
-                         mesh.vertices[c[2]] - reference);
-          } else if (n > 3) {
-            // Relative coordinates of one polygon; a small buffer covers nearly every face.
-            thread_local std::vector<Vec3d> v;
-            v.resize(n);
-            for (std::size_t k = 0; k < n; ++k) v[k] = mesh.vertices[c[k]] - reference;
-            add_polygon(s, v.data(), n);
-          }
-        }
+        for (std::size_t f = begin; f < end; ++f)
+          add_mesh_face(s, mesh.vertices.data(), mesh.face(f), mesh.face_size(f), reference);
       });
 }
 
@@ -123,18 +112,28 @@ std::optional<std::string> float32_precision_warning(const Box3& box) {
   return std::string(buf);
 }
 
+MassProperties mesh_mass_properties_from_sums(const BoundarySums& sums, Vec3d reference,
+                                              std::span<const Vec3d> vertices, std::uint64_t faces,
+                                              std::uint64_t triangles, const MassOptions& options,
+                                              bool single_precision) {
+  MassProperties p = mass_properties_from_sums(sums, reference, options);
+  p.faces = faces;
+  p.vertices = vertices.size();
+  p.triangles = triangles;
+  if (single_precision)
+    if (auto w = float32_precision_warning(bounding_box(vertices))) p.warnings.push_back(*w);
+  return p;
+}
+
 MassProperties mass_properties(const Mesh& mesh, const MassOptions& options,
                                const MeshSource* source) {
   const Vec3d ref = reference_point(mesh);
-  MassProperties p =
-      mass_properties_from_sums(mesh_boundary_sums(mesh, ref, options.threads), ref, options);
-  p.faces = mesh.face_count();
-  p.vertices = mesh.vertices.size();
+  std::uint64_t triangles = 0;
   for (std::size_t f = 0; f < mesh.face_count(); ++f)
-    if (mesh.face_size(f) >= 3) p.triangles += mesh.face_size(f) - 2;
-  if (source && source->single_precision)
-    if (auto w = float32_precision_warning(bounding_box(mesh.vertices))) p.warnings.push_back(*w);
-  return p;
+    if (mesh.face_size(f) >= 3) triangles += mesh.face_size(f) - 2;
+  return mesh_mass_properties_from_sums(mesh_boundary_sums(mesh, ref, options.threads), ref,
+                                        mesh.vertices, mesh.face_count(), triangles, options,
+                                        source && source->single_precision);
 }
 
 }  // namespace pgamesh

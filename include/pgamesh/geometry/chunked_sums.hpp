@@ -49,4 +49,37 @@ Partial chunked_sums(std::size_t count, unsigned threads, const AddRange& add_ra
   return total;
 }
 
+// The same sums as chunked_sums for faces handed over one at a time in face order, on one thread
+// (a reader that sums each face as it parses it and keeps no face list): each chunk of
+// faces_per_chunk faces is summed on its own from a value-initialised partial, and the partials are
+// added in chunk order, so total() is chunked_sums' result bit for bit.
+template <class Partial = BoundarySums>
+class StreamedChunkSums {
+ public:
+  // The partial sums of the chunk that the next face belongs to; call next() after adding it.
+  Partial& current() { return partial_; }
+
+  // The face just added to current() is done.
+  void next() {
+    if (++in_chunk_ == faces_per_chunk) flush();
+  }
+
+  // The sums of every face added so far.
+  Partial total() const {
+    Partial t = total_;
+    if (in_chunk_ > 0) t += partial_;
+    return t;
+  }
+
+ private:
+  void flush() {
+    total_ += partial_;
+    partial_ = Partial{};
+    in_chunk_ = 0;
+  }
+
+  Partial total_{}, partial_{};
+  std::size_t in_chunk_ = 0;
+};
+
 }  // namespace pgamesh

@@ -13,6 +13,7 @@
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -74,6 +75,15 @@ BoundarySums mesh_boundary_sums(const Mesh& mesh, Vec3d reference, unsigned thre
 // that is not finite.
 MassProperties mass_properties_from_sums(const BoundarySums& sums, Vec3d reference,
                                          const MassOptions& options);
+
+// What mass_properties() below returns, from the boundary sums of the faces about `reference` (the
+// reference_point of `vertices`) accumulated by a caller that summed them itself (add_mesh_face of
+// face_sums.hpp, in face order and chunking of chunked_sums.hpp): the sums turned into figures,
+// the counts filled in and, with `single_precision`, the float32 warning.
+MassProperties mesh_mass_properties_from_sums(const BoundarySums& sums, Vec3d reference,
+                                              std::span<const Vec3d> vertices, std::uint64_t faces,
+                                              std::uint64_t triangles, const MassOptions& options,
+                                              bool single_precision);
 
 // Mass properties of a mesh, accumulated about reference_point(mesh). When `source` says the
 // coordinates were float32, adds float32_precision_warning's warning.
