@@ -171,37 +171,52 @@ WeldedTriangles weld_binary_stl(const BinaryStlView& view, const std::string& na
   // A NaN or infinity: name the first one, with its byte offset (throws).
   if (!low.finite || !high.finite) check_binary_stl_finite(view, name);
 
+  // The first half's classes keep their ids; with two halves, the second half's are looked up in
+  // the first half's table, each half of them on a thread (the table is only read), and those not
+  // found are numbered after the first half's in their own first-occurrence order.
+  const std::size_t first_classes = low.keys.size();
+  std::vector<std::uint32_t> global;  // second half's class → welded id
   if (split != n) {
-    // The second half's classes looked up in the first half's table, each half of them on a
-    // thread (the table is only read); those not found are numbered after the first half's.
     const std::size_t m = high.keys.size();
-    std::vector<std::uint32_t> global(m);
+    global.resize(m);
     detail::run_both(
         true, [&] { find_in_range(low, high.keys, 0, m / 2, global.data()); },
         [&] { find_in_range(low, high.keys, m / 2, m, global.data()); });
-    for (std::size_t j = 0; j < m; ++j) {
-      if (global[j] != KeyTable::none) continue;
-      global[j] = static_cast<std::uint32_t>(low.keys.size());
-      low.keys.push_back(high.keys[j]);
-      low.first_vertex.push_back(high.first_vertex[j]);
-    }
-    high = RangeWeld{};
-    auto renumber = [&](std::size_t begin, std::size_t end) {
-      for (std::size_t c = begin; c < end; ++c) w.corners[c] = global[w.corners[c]];
-    };
-    const std::size_t mid = split + (n - split) / 2;
-    detail::run_both(
-        true, [&] { renumber(split, mid); }, [&] { renumber(mid, n); });
+    high.table = KeyTable(0);
   }
   low.table = KeyTable(0);
 
-  w.positions.resize(low.keys.size());
-  for (std::size_t id = 0; id < low.keys.size(); ++id) {
-    const Key& k = low.keys[id];
-    w.positions[id] = {std::bit_cast<float>(k[0]), std::bit_cast<float>(k[1]),
-                       std::bit_cast<float>(k[2])};
-  }
+  // The arrays are sized once (the classes are counted first), so that no push_back reallocates
+  // and copies them; the positions of the first half's classes are converted and the second
+  // half's corners renumbered on two threads.
+  const std::size_t fresh =
+      static_cast<std::size_t>(std::count(global.begin(), global.end(), KeyTable::none));
+  const std::size_t classes = first_classes + fresh;
+  w.positions.resize(classes);
   w.representative = std::move(low.first_vertex);
+  w.representative.resize(classes);
+  auto position = [](const Key& k) {
+    return Vec3d{std::bit_cast<float>(k[0]), std::bit_cast<float>(k[1]),
+                 std::bit_cast<float>(k[2])};
+  };
+  for (std::size_t j = 0, id = first_classes; j < global.size(); ++j) {
+    if (global[j] != KeyTable::none) continue;
+    global[j] = static_cast<std::uint32_t>(id);
+    w.positions[id] = position(high.keys[j]);
+    w.representative[id] = high.first_vertex[j];
+    ++id;
+  }
+  high = RangeWeld{};
+  auto convert_and_renumber = [&](int part) {
+    const std::size_t half = first_classes / 2;
+    for (std::size_t id = part == 0 ? 0 : half; id < (part == 0 ? half : first_classes); ++id)
+      w.positions[id] = position(low.keys[id]);
+    const std::size_t mid = split + (n - split) / 2;
+    for (std::size_t c = part == 0 ? split : mid; c < (part == 0 ? mid : n); ++c)
+      w.corners[c] = global[w.corners[c]];
+  };
+  detail::run_both(
+      split != n, [&] { convert_and_renumber(0); }, [&] { convert_and_renumber(1); });
   w.merged = n - w.positions.size();
   return w;
 }
