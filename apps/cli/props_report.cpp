@@ -1,11 +1,14 @@
 #include "props_report.hpp"
 
+#include <exception>
 #include <filesystem>
+#include <optional>
 #include <system_error>
 #include <utility>
 
 #include "pgamesh/geometry/bounding_box.hpp"
 #include "pgamesh/mesh/mapped_file.hpp"
+#include "pgamesh/mesh/ply_mass_properties.hpp"
 #include "pgamesh/mesh/read_mesh.hpp"
 #include "pgamesh/mesh/stl_ascii_mass_properties.hpp"
 #include "pgamesh/mesh/stl_binary.hpp"
@@ -48,17 +51,44 @@ void judge(PropsReport& r) {
 
 namespace {
 
-// The report without the topology: mass properties, warnings.
-PropsReport mass_report(const Mesh& mesh, const MeshSource& source, const PropsOptions& options) {
+// The report without the topology: mass properties, the reader's and their warnings.
+PropsReport mass_report(MassProperties mass, const MeshSource& source,
+                        const PropsOptions& options) {
   PropsReport r;
   r.file = source.path;
   r.format = source.format;
   r.single_precision = source.single_precision;
   r.density_from_mass = options.mass.mass.has_value();
-  r.mass = mass_properties(mesh, options.mass, &source);
+  r.mass = std::move(mass);
   r.warnings = source.warnings;
   r.warnings.insert(r.warnings.end(), r.mass.warnings.begin(), r.mass.warnings.end());
   return r;
+}
+
+PropsReport mass_report(const Mesh& mesh, const MeshSource& source, const PropsOptions& options) {
+  return mass_report(mass_properties(mesh, options.mass, &source), source, options);
+}
+
+// The report of a PLY file without topology, its faces summed as they are read
+// (ply_mass_properties.hpp), or nullopt for a file that path declines or finds fault with: the
+// careful reader then reads it again and reports exactly what it reports.
+std::optional<PropsReport> summed_ply_report(std::span<const char> bytes, const std::string& name,
+                                             const PropsOptions& options, bool release_pages) {
+  const MeshFormat format =
+      options.format == MeshFormat::unknown ? detect_format(bytes) : options.format;
+  if (options.topology || (format != MeshFormat::ply_ascii && format != MeshFormat::ply_binary_le &&
+                           format != MeshFormat::ply_binary_be))
+    return std::nullopt;
+  try {
+    MeshSource source;
+    auto mass = ply_mass_properties(bytes, name, source, options.mass, release_pages);
+    if (!mass) return std::nullopt;
+    PropsReport r = mass_report(std::move(*mass), source, options);
+    judge(r);
+    return r;
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
 }
 
 }  // namespace
@@ -123,6 +153,7 @@ PropsReport props_of(std::span<const char> bytes, const std::string& name,
       }
     }
   }
+  if (auto r = summed_ply_report(bytes, name, options, release_records)) return std::move(*r);
   // The careful readers, releasing the file's pages as they parse (release_records); the mesh is
   // then handed to the topology pass, which frees it once welded (topology.hpp).
   MeshSource source;

@@ -6,12 +6,16 @@
 #include <bit>
 #include <cmath>
 #include <cstring>
+#include <optional>
 #include <string>
 #include <type_traits>
 #include <vector>
 
 #include "page_release.hpp"
+#include "pgamesh/geometry/chunked_sums.hpp"
 #include "pgamesh/input_error.hpp"
+#include "pgamesh/mesh/face_sums.hpp"
+#include "pgamesh/mesh/reference_point.hpp"
 #include "readers.hpp"
 #include "text_cursor.hpp"
 
@@ -126,6 +130,48 @@ struct Header {
   MeshFormat format = MeshFormat::unknown;
   std::vector<PlyElement> elements;
   const char* data = nullptr;  // first byte after "end_header\n"
+};
+
+// Where the readers below put the faces: into the mesh (read_ply), or summed one by one and not
+// kept (read_ply_summing_faces). start() is called once the vertices are read, when the face
+// element begins; then, per face, add_corner() for each corner and end_face().
+struct StoredFaces {
+  Mesh& mesh;
+  void start(const Mesh&) {}
+  void reserve(std::size_t faces, std::size_t corners) {
+    mesh.face_offsets.reserve(faces + 1);
+    mesh.corners.reserve(corners);
+  }
+  void add_corner(std::uint32_t v) { mesh.corners.push_back(v); }
+  std::size_t corner_count() const { return mesh.corners.size(); }
+  void end_face() { mesh.face_offsets.push_back(static_cast<std::uint32_t>(mesh.corners.size())); }
+};
+
+struct SummedFaces {
+  explicit SummedFaces(PlyFaceSums& sums_out) : out(sums_out) {}
+  PlyFaceSums& out;
+  const Vec3d* vertices = nullptr;
+  StreamedChunkSums<> sums;
+  std::vector<std::uint32_t> face;  // the corners of the face being read
+  std::size_t corners = 0;
+  void start(const Mesh& mesh) {
+    vertices = mesh.vertices.data();
+    out.reference = reference_point(mesh.vertices);
+  }
+  void reserve(std::size_t, std::size_t) {}
+  void add_corner(std::uint32_t v) {
+    face.push_back(v);
+    ++corners;
+  }
+  std::size_t corner_count() const { return corners; }
+  // The face as mesh_boundary_sums adds it (face_sums.hpp), in the chunks of chunked_sums.
+  void end_face() {
+    add_mesh_face(sums.current(), vertices, face.data(), face.size(), out.reference);
+    sums.next();
+    ++out.faces;
+    if (face.size() >= 3) out.triangles += face.size() - 2;
+    face.clear();
+  }
 };
 
 Header parse_header(TextCursor& c) {
@@ -298,7 +344,8 @@ std::string item_name(const PlyElement& el, std::uint64_t i) {
   return el.name + " " + std::to_string(i);
 }
 
-void read_binary(const Header& h, const Layout& l, const TextCursor& c, Mesh& mesh,
+template <class Faces>
+void read_binary(const Header& h, const Layout& l, const TextCursor& c, Mesh& mesh, Faces& faces,
                  PageRelease& release) {
   const bool data_big = h.format == MeshFormat::ply_binary_be;
   const bool swap = data_big != (std::endian::native == std::endian::big);
@@ -355,8 +402,9 @@ void read_binary(const Header& h, const Layout& l, const TextCursor& c, Mesh& me
       const PlyProperty& ip = el.props[static_cast<std::size_t>(l.indices)];
       const std::size_t isize = type_size(ip.type);
       const std::size_t min_face = type_size(ip.count_type) + 3 * isize;
-      mesh.face_offsets.reserve(bounded_reserve(el.count, r.remaining(), min_face) + 1);
-      mesh.corners.reserve(3 * bounded_reserve(el.count, r.remaining(), min_face));
+      faces.start(mesh);
+      faces.reserve(bounded_reserve(el.count, r.remaining(), min_face),
+                    3 * bounded_reserve(el.count, r.remaining(), min_face));
       for (std::uint64_t i = 0; i < el.count; ++i) {
         release.passed(r.p_);
         for (std::size_t p = 0; p < el.props.size(); ++p) {
@@ -374,12 +422,12 @@ void read_binary(const Header& h, const Layout& l, const TextCursor& c, Mesh& me
             if (idx < 0 || static_cast<std::uint64_t>(idx) >= nverts)
               r.fail(r.p_, "vertex index " + std::to_string(idx) + " of face " + std::to_string(i) +
                                " is out of range (" + std::to_string(nverts) + " vertices)");
-            mesh.corners.push_back(static_cast<std::uint32_t>(idx));
+            faces.add_corner(static_cast<std::uint32_t>(idx));
             r.p_ += isize;
           }
-          if (mesh.corners.size() > max_vertices)
+          if (faces.corner_count() > max_vertices)
             r.fail(at, "too many face corners for 32-bit offsets");
-          mesh.face_offsets.push_back(static_cast<std::uint32_t>(mesh.corners.size()));
+          faces.end_face();
         }
       }
     } else {
@@ -418,7 +466,9 @@ void ascii_skip_property(TextCursor& c, const PlyProperty& prop) {
   for (std::int64_t k = 0; k < n; ++k) ascii_value(c, prop.type, "a list entry");
 }
 
-void read_ascii(const Header& h, const Layout& l, TextCursor& c, Mesh& mesh, PageRelease& release) {
+template <class Faces>
+void read_ascii(const Header& h, const Layout& l, TextCursor& c, Mesh& mesh, Faces& faces,
+                PageRelease& release) {
   c.p = h.data;
   const std::uint64_t nverts =
       l.vertex_element >= 0 ? h.elements[static_cast<std::size_t>(l.vertex_element)].count : 0;
@@ -446,8 +496,9 @@ void read_ascii(const Header& h, const Layout& l, TextCursor& c, Mesh& mesh, Pag
         mesh.vertices.push_back(v);
       }
     } else if (static_cast<int>(e) == l.face_element) {
-      mesh.face_offsets.reserve(bounded_reserve(el.count, remaining(), 8) + 1);
-      mesh.corners.reserve(3 * bounded_reserve(el.count, remaining(), 8));
+      faces.start(mesh);
+      faces.reserve(bounded_reserve(el.count, remaining(), 8),
+                    3 * bounded_reserve(el.count, remaining(), 8));
       for (std::uint64_t i = 0; i < el.count; ++i) {
         release.passed(c.p);
         for (std::size_t p = 0; p < el.props.size(); ++p) {
@@ -468,11 +519,11 @@ void read_ascii(const Header& h, const Layout& l, TextCursor& c, Mesh& mesh, Pag
             if (idx < 0 || static_cast<std::uint64_t>(idx) >= nverts)
               c.fail(iat, "vertex index " + std::to_string(idx) + " of face " + std::to_string(i) +
                               " is out of range (" + std::to_string(nverts) + " vertices)");
-            mesh.corners.push_back(static_cast<std::uint32_t>(idx));
+            faces.add_corner(static_cast<std::uint32_t>(idx));
           }
-          if (mesh.corners.size() > max_vertices)
+          if (faces.corner_count() > max_vertices)
             c.fail(at, "too many face corners for 32-bit offsets");
-          mesh.face_offsets.push_back(static_cast<std::uint32_t>(mesh.corners.size()));
+          faces.end_face();
         }
       }
     } else {
@@ -487,12 +538,19 @@ void read_ascii(const Header& h, const Layout& l, TextCursor& c, Mesh& mesh, Pag
 
 }  // namespace
 
-void read_ply(std::span<const char> bytes, const std::string& name, Mesh& mesh, MeshSource& source,
-              bool release_pages) {
+namespace {
+
+// The header, the source's fields and the data of a PLY file, its faces handed to `faces`. With
+// `vertices_first`, returns false before reading any data when the face element comes before the
+// vertex element.
+template <class Faces>
+bool read_ply_with(std::span<const char> bytes, const std::string& name, Mesh& mesh,
+                   MeshSource& source, bool release_pages, Faces& faces, bool vertices_first) {
   TextCursor c(bytes, name);
   PageRelease release(bytes.data(), release_pages);
   const Header h = parse_header(c);
   const Layout l = find_layout(h, c);
+  if (vertices_first && l.face_element >= 0 && l.face_element < l.vertex_element) return false;
   source.format = h.format;
   if (l.vertex_element >= 0) {
     const PlyElement& v = h.elements[static_cast<std::size_t>(l.vertex_element)];
@@ -505,9 +563,29 @@ void read_ply(std::span<const char> bytes, const std::string& name, Mesh& mesh, 
       source.warnings.push_back(name + ": PLY element '" + el.name + "' (" +
                                 std::to_string(el.count) + " items) ignored");
   if (h.format == MeshFormat::ply_ascii)
-    read_ascii(h, l, c, mesh, release);
+    read_ascii(h, l, c, mesh, faces, release);
   else
-    read_binary(h, l, c, mesh, release);
+    read_binary(h, l, c, mesh, faces, release);
+  return true;
+}
+
+}  // namespace
+
+void read_ply(std::span<const char> bytes, const std::string& name, Mesh& mesh, MeshSource& source,
+              bool release_pages) {
+  StoredFaces faces{mesh};
+  read_ply_with(bytes, name, mesh, source, release_pages, faces, false);
+}
+
+std::optional<PlyFaceSums> read_ply_summing_faces(std::span<const char> bytes,
+                                                  const std::string& name, Mesh& mesh,
+                                                  MeshSource& source, bool release_pages) {
+  PlyFaceSums out;
+  SummedFaces faces(out);
+  if (!read_ply_with(bytes, name, mesh, source, release_pages, faces, true)) return std::nullopt;
+  if (!faces.vertices) out.reference = reference_point(mesh.vertices);  // no face element
+  out.sums = faces.sums.total();
+  return out;
 }
 
 }  // namespace pgamesh::detail

@@ -4,9 +4,11 @@
 // to the kernel as it goes (page_release.hpp).
 #pragma once
 
+#include <optional>
 #include <span>
 #include <string>
 
+#include "pgamesh/geometry/body_moments.hpp"
 #include "pgamesh/mesh/mesh.hpp"
 
 namespace pgamesh::detail {
@@ -21,6 +23,21 @@ void read_ply(std::span<const char> bytes, const std::string& name, Mesh& mesh, 
               bool release_pages = false);
 void read_off(std::span<const char> bytes, const std::string& name, Mesh& mesh, MeshSource& source,
               bool release_pages = false);
+
+// The boundary sums of a PLY file's faces about `reference` (reference_point of its vertices),
+// accumulated as mesh_boundary_sums accumulates them, and the face counts.
+struct PlyFaceSums {
+  BoundarySums sums;
+  Vec3d reference{};
+  std::uint64_t faces = 0, triangles = 0;  // as mass_properties() counts them
+};
+
+// read_ply without keeping the faces: the vertices are read into `mesh` (its face list stays
+// empty) and each face is summed as it is parsed. The same errors and source fields as read_ply.
+// Returns nullopt, having read no data, when the face element comes before the vertex element.
+std::optional<PlyFaceSums> read_ply_summing_faces(std::span<const char> bytes,
+                                                  const std::string& name, Mesh& mesh,
+                                                  MeshSource& source, bool release_pages = false);
 
 // A vertex count that fits the 32-bit corner indices of Mesh, or an error at `where`.
 inline constexpr std::uint64_t max_vertices = 0xFFFFFFFFull;

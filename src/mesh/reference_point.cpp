@@ -5,7 +5,11 @@
 namespace pgamesh {
 
 Vec3d reference_point(const Mesh& mesh) {
-  return bounding_box(mesh.vertices).centre();
+  return reference_point(mesh.vertices);
+}
+
+Vec3d reference_point(std::span<const Vec3d> vertices) {
+  return bounding_box(vertices).centre();
 }
 
 }  // namespace pgamesh

@@ -12,7 +12,9 @@
 #include <fstream>
 #include <string>
 
+#include "pgamesh/input_error.hpp"
 #include "pgamesh/mesh/mesh_format.hpp"
+#include "pgamesh/mesh/read_mesh.hpp"
 #include "pgamesh/mesh/write_mesh.hpp"
 #include "support/golden.hpp"
 #include "support/solids.hpp"
@@ -154,6 +156,48 @@ TEST(PropsRelease, ErrorsKeepTheirPositions) {
     EXPECT_NE(mapped.err.find(where), std::string::npos) << mapped.err;
   }
   std::filesystem::remove(path);
+}
+
+// Without topology a PLY's faces are summed as they are parsed, never stored: the whole report
+// must be the one of the same mesh read into a Mesh first (an OBJ of the same doubles), and an
+// error late in a mapped file the careful reader's, byte offset included.
+TEST(PropsRelease, PlyWithoutAFaceListReportsAsTheMeshPath) {
+  const pgamesh::Mesh mesh = pgamesh::test::uv_sphere(1.5, 200, 400);  // quads and triangles
+  auto report = [](const std::string& bytes, const std::string& what) {
+    const std::string path = temp_path(what);
+    std::ofstream(path, std::ios::binary) << bytes;
+    const CliRun r = run_cli("props \"" + path + "\" --json --no-topology");
+    std::filesystem::remove(path);
+    EXPECT_EQ(r.status, 0) << r.err;
+    json j = json::parse(r.out);
+    j.erase("file");
+    j.erase("format");
+    return j;
+  };
+  const json expected = report(pgamesh::write_mesh_bytes(mesh, pgamesh::MeshFormat::obj), ".obj");
+  EXPECT_EQ(expected["faces"], mesh.face_count());
+  for (pgamesh::MeshFormat f : {pgamesh::MeshFormat::ply_ascii, pgamesh::MeshFormat::ply_binary_le,
+                                pgamesh::MeshFormat::ply_binary_be}) {
+    SCOPED_TRACE(pgamesh::format_name(f));
+    EXPECT_EQ(report(pgamesh::write_mesh_bytes(mesh, f), ".ply"), expected);
+  }
+
+  // A vertex index out of range in the last face, after pages already given back.
+  std::string bad = pgamesh::write_mesh_bytes(mesh, pgamesh::MeshFormat::ply_binary_le);
+  bad[bad.size() - 2] = 0x7f;  // the last index's high byte
+  const std::string path = temp_path(".ply");
+  std::ofstream(path, std::ios::binary) << bad;
+  std::string expected_error;
+  try {
+    pgamesh::read_mesh_bytes({bad.data(), bad.size()}, path);
+  } catch (const pgamesh::InputError& e) {
+    expected_error = std::string("pgamesh props: ") + e.what() + "\n";
+  }
+  ASSERT_NE(expected_error.find("out of range"), std::string::npos) << expected_error;
+  const CliRun mapped = run_cli("props \"" + path + "\" --no-topology");
+  std::filesystem::remove(path);
+  EXPECT_EQ(mapped.status, 1);
+  EXPECT_EQ(mapped.err, expected_error);
 }
 
 }  // namespace

@@ -4,6 +4,8 @@
 // all take it from here.
 #pragma once
 
+#include <span>
+
 #include "pgamesh/algebra/vec3.hpp"
 #include "pgamesh/mesh/mesh.hpp"
 
@@ -11,5 +13,8 @@ namespace pgamesh {
 
 // The centre of the bounding box of the mesh's vertices (the origin for a mesh without vertices).
 Vec3d reference_point(const Mesh& mesh);
+
+// The same point for a mesh whose vertices are all a reader has kept (ply_mass_properties.hpp).
+Vec3d reference_point(std::span<const Vec3d> vertices);
 
 }  // namespace pgamesh
