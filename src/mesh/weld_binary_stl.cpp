@@ -9,6 +9,7 @@
 #include "page_release.hpp"
 #include "pgamesh/input_error.hpp"
 #include "pgamesh/mesh/welded_triangles.hpp"
+#include "populate_pages.hpp"
 #include "two_threads.hpp"
 #include "weld_table.hpp"
 
@@ -155,7 +156,7 @@ WeldedTriangles weld_binary_stl(const BinaryStlView& view, const std::string& na
   const std::size_t n = 3 * static_cast<std::size_t>(view.count);
   WeldedTriangles w;
   w.input_vertices = n;
-  w.corners.resize(n);
+  detail::resize_populated(w.corners, n);
   if (n == 0) return w;
 
   // Two threads weld the two halves of the records into tables of their own; the second half's
@@ -192,7 +193,7 @@ WeldedTriangles weld_binary_stl(const BinaryStlView& view, const std::string& na
   const std::size_t fresh =
       static_cast<std::size_t>(std::count(global.begin(), global.end(), KeyTable::none));
   const std::size_t classes = first_classes + fresh;
-  w.positions.resize(classes);
+  detail::resize_populated(w.positions, classes);
   w.representative = std::move(low.first_vertex);
   w.representative.resize(classes);
   auto position = [](const Key& k) {
