@@ -121,17 +121,25 @@ void tally_degenerate(TopologyTally& t, std::uint32_t f, bool collapsed, std::ui
   TopologyReport& r = t.r;
   const Vec3d n = polygon_normal(k, corner);  // own_normal
   const bool zero = collapsed || (n.x == 0 && n.y == 0 && n.z == 0);
-  const double own_area = 0.5 * length(n);
   bool small = false;
+  double own_area = 0;
   if (!zero) {
     double longest2 = 0;
     for (std::uint32_t i = 0; i < k; ++i) {
       const Vec3d d = corner((i + 1) % k) - corner(i);
       longest2 = std::max(longest2, dot(d, d));
     }
-    small = own_area <= t.area_threshold * longest2;
+    const double bound = t.area_threshold * longest2;
+    // Nearly every face is far from small: when ‖n‖² exceeds (2 bound)² by a margin much wider
+    // than the rounding of either side, own_area = ½‖n‖ > bound is certain without the square
+    // root (for bound in the normal range; below it the exact test decides).
+    if (bound > 1e-100 && dot(n, n) > 4 * bound * bound * (1 + 1e-9)) return;
+    own_area = 0.5 * length(n);
+    small = own_area <= bound;
+    if (!small) return;
+  } else {
+    own_area = 0.5 * length(n);
   }
-  if (!zero && !small) return;
   FaceLocation loc;
   loc.face = f;
   loc.area = own_area;
@@ -152,7 +160,8 @@ void tally_face(TopologyTally& t, std::uint32_t f, bool collapsed) {
     const std::array<Vec3d, 3> p{mesh.corner_position(begin), mesh.corner_position(begin + 1),
                                  mesh.corner_position(begin + 2)};
     const Vec3d ref = t.r.reference_point;
-    tally_triangle(t, f, collapsed, p, triangle_carrier(p[0] - ref, p[1] - ref, p[2] - ref));
+    const pga3::Plane<double> carrier = triangle_carrier(p[0] - ref, p[1] - ref, p[2] - ref);
+    tally_triangle(t, f, collapsed, p, carrier, pga3::norm(carrier));
     return;
   }
   if (k >= 3) t.r.triangles += k - 2;
@@ -163,12 +172,13 @@ void tally_face(TopologyTally& t, std::uint32_t f, bool collapsed) {
 }
 
 void tally_triangle(TopologyTally& t, std::uint32_t f, bool collapsed,
-                    const std::array<Vec3d, 3>& corner, const pga3::Plane<double>& carrier) {
+                    const std::array<Vec3d, 3>& corner, const pga3::Plane<double>& carrier,
+                    double carrier_norm) {
   t.r.triangles += 1;
   // face_surface_sums of a triangle, with the same additions.
   BoundarySums p;
   p.volume6 += origin_join(carrier);
-  add_face_carrier(p, carrier);
+  add_face_carrier(p, carrier, carrier_norm);
   add_surface(t.total, p);
   tally_degenerate(t, f, collapsed, 3, [&](std::size_t i) { return corner[i]; });
 }

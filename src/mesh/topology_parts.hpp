@@ -60,9 +60,11 @@ void tally_face(TopologyTally& t, std::uint32_t f, bool collapsed);
 // Triangle f whose corners are `corner` (welded coordinates) and whose carrier about
 // r.reference_point is `carrier` (triangle_carrier of the corners minus the reference point, as
 // add_triangle forms it): what tally_face does for a triangle, without forming the carrier again —
-// the fast triangle pass computes it once for the mass sums and the tally.
+// the fast triangle pass computes it and its norm (pga3::norm(carrier)) once for the mass sums
+// and the tally.
 void tally_triangle(TopologyTally& t, std::uint32_t f, bool collapsed,
-                    const std::array<Vec3d, 3>& corner, const pga3::Plane<double>& carrier);
+                    const std::array<Vec3d, 3>& corner, const pga3::Plane<double>& carrier,
+                    double carrier_norm);
 
 // The per-component sums, once every face has been tallied: face_component[f] is f's component
 // or no_edge. When one component holds every face its sums are the total's (the same additions in

@@ -144,6 +144,32 @@ TEST(TopologyDefects, ZeroAndSmallAreaFacesAreReportedSeparately) {
   EXPECT_EQ(analyze_topology(m, none).small_area_faces, 0u);
 }
 
+TEST(TopologyDefects, SmallAreaThresholdIsExactAtItsBoundary) {
+  // The sliver (0,0,0), (1,0,0), (0.5,h,0): own area h/2, longest side 1, so it is small exactly
+  // when h/2 <= threshold. Heights on both sides of the boundary, from far (where the pass decides
+  // without a square root) to one ulp away (where the exact comparison decides).
+  const double threshold = 1e-9, edge = 2 * threshold;
+  const double heights[] = {edge * 0.5,
+                            std::nextafter(edge, 0.0),
+                            edge,
+                            std::nextafter(edge, 1.0),
+                            edge * (1 + 1e-12),
+                            edge * (1 + 1e-9),
+                            edge * (1 + 1e-8),
+                            edge * 2,
+                            1e-3};
+  for (const double h : heights) {
+    Mesh m;
+    m.vertices = {{0, 0, 0}, {1, 0, 0}, {0.5, h, 0}};
+    m.add_face({0, 1, 2});
+    TopologyOptions options;
+    options.area_threshold = threshold;
+    const TopologyReport r = analyze_topology(m, options);
+    EXPECT_EQ(r.small_area_faces, 0.5 * h <= threshold ? 1u : 0u) << "h = " << h;
+    EXPECT_EQ(r.zero_area_faces, 0u);
+  }
+}
+
 TEST(TopologyDefects, CollapsedFaceDoesNotBreakItsNeighbours) {
   // Weld two corners of one triangle together (a tolerance weld would do this): the collapsed face
   // is left out of the edges, so the remaining faces still close up around it.

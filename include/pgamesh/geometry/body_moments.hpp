@@ -61,13 +61,19 @@ inline pga3::Plane<double> add_tetrahedron(BoundarySums& s, Vec3d a, Vec3d b, Ve
 
 // Adds the surface parts of one face with carrier f: its area ½‖f‖ (paper Table 1; for a
 // polygon, f is the sum of its fan carriers and ½‖f‖ the planar polygon area of §4c) and f itself
-// to Σ F, whose norm measures the gap (Cor. 4.1).
-inline void add_face_carrier(BoundarySums& s, const pga3::Plane<double>& f) {
-  s.area2 += pga3::norm(f);
+// to Σ F, whose norm measures the gap (Cor. 4.1). `norm_f` is pga3::norm(f), for a caller that
+// needs it elsewhere too (the topology pass sums it twice; one square root serves both).
+inline void add_face_carrier(BoundarySums& s, const pga3::Plane<double>& f, double norm_f) {
+  s.area2 += norm_f;
   s.carrier_sum.e0 += f.e0;
   s.carrier_sum.e1 += f.e1;
   s.carrier_sum.e2 += f.e2;
   s.carrier_sum.e3 += f.e3;
+}
+
+// The same with the norm of f computed here.
+inline void add_face_carrier(BoundarySums& s, const pga3::Plane<double>& f) {
+  add_face_carrier(s, f, pga3::norm(f));
 }
 
 // Adds the triangle (a, b, c), coordinates relative to the reference point, and returns its
