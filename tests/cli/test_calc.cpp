@@ -11,6 +11,7 @@
 #include "support/golden.hpp"
 
 using pgamesh::test::json;
+using pgamesh::test::parse_json;
 
 namespace {
 
@@ -79,7 +80,7 @@ std::string point_expr(const json& p) {
                                         const std::map<std::string, std::string>& rename = {}) {
   json got;
   try {
-    got = json::parse(out);
+    got = parse_json(out);
   } catch (const std::exception& e) {
     return ::testing::AssertionFailure() << "not JSON: " << out;
   }

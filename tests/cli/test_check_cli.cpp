@@ -18,6 +18,7 @@ namespace pgamesh {
 namespace {
 
 using test::json;
+using test::parse_json;
 
 struct CliRun {
   int status = -1;
@@ -60,7 +61,7 @@ const char* open_cube_obj =
 TEST(CheckCli, JsonOfAClosedGoldenMesh) {
   const CliRun r = run_cli(std::string("'") + PGAMESH_GOLDEN_DIR + "/meshes/torus.obj' --json");
   ASSERT_EQ(r.status, 0) << r.err;
-  const json j = json::parse(r.out);
+  const json j = parse_json(r.out);
   const json golden = test::load_golden("mesh_props.json");
   json expected;
   for (const auto& c : golden["cases"])
@@ -86,7 +87,7 @@ TEST(CheckCli, JsonOfAnOpenMeshListsItsLoop) {
   const std::string path = temp_file("pgamesh_open_cube.obj", open_cube_obj);
   const CliRun r = run_cli("'" + path + "' --json");
   ASSERT_EQ(r.status, 0) << r.err;  // an open mesh is a result, not an error
-  const json j = json::parse(r.out);
+  const json j = parse_json(r.out);
   EXPECT_EQ(j["closed"], false);
   EXPECT_EQ(j["volume_valid"], false);
   EXPECT_EQ(j["boundary_edges"], 4);
@@ -120,7 +121,7 @@ TEST(CheckCli, FixOrientationWritesTheRepairedMesh) {
   std::filesystem::remove(out);
   const CliRun r = run_cli("'" + in + "' --fix-orientation --output '" + out + "' --json");
   ASSERT_EQ(r.status, 0) << r.err;
-  const json j = json::parse(r.out);
+  const json j = parse_json(r.out);
   EXPECT_EQ(j["orientation_fix"]["flipped_faces"], 2);
   EXPECT_EQ(j["orientation_fix"]["components"][0]["flipped_faces"], json::array({2, 5}));
   EXPECT_EQ(j["closed"], true);  // the report describes the repaired mesh
@@ -155,10 +156,10 @@ TEST(CheckCli, WeldToleranceIsReported) {
   const std::string path = temp_file(
       "pgamesh_seam.obj",
       "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1.000000001 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 4 6 5\n");
-  const json exact = json::parse(run_cli("'" + path + "' --json").out);
+  const json exact = parse_json(run_cli("'" + path + "' --json").out);
   EXPECT_EQ(exact["boundary_edges"], 6);
   EXPECT_EQ(exact["components"], 2);
-  const json welded = json::parse(run_cli("'" + path + "' --json --weld-tolerance 1e-6").out);
+  const json welded = parse_json(run_cli("'" + path + "' --json --weld-tolerance 1e-6").out);
   EXPECT_EQ(welded["boundary_edges"], 4);
   EXPECT_EQ(welded["components"], 1);
   EXPECT_EQ(welded["weld"]["merged_vertices"], 2);

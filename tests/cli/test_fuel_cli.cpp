@@ -15,6 +15,7 @@
 #include "support/golden.hpp"
 
 using pgamesh::test::json;
+using pgamesh::test::parse_json;
 
 namespace {
 
@@ -79,7 +80,7 @@ TEST(FuelCli, LevelJsonMatchesGolden) {
     const CliRun r = run_cli(mesh + " --up " + vec_arg(c["input"]["up"]) + " --level " +
                              num_arg(c["input"]["level"].get<double>()) + " --json");
     ASSERT_EQ(r.status, 0) << r.err;
-    const json out = json::parse(r.out);
+    const json out = parse_json(r.out);
     const json& e = c["expected"];
     for (const char* k : {"level", "volume", "fraction", "wetted_area", "surface_area"})
       EXPECT_NEAR(out[k].get<double>(), e[k].get<double>(),
@@ -101,17 +102,17 @@ TEST(FuelCli, VolumeAndFractionSolveForTheLevel) {
   const std::string mesh = golden_mesh("icosphere_L4.obj");
   CliRun r = run_cli(mesh + " --up " + vec_arg(c["input"]["up"]) + " --volume 1 --json");
   ASSERT_EQ(r.status, 0) << r.err;
-  json out = json::parse(r.out);
+  json out = parse_json(r.out);
   EXPECT_NEAR(out["level"].get<double>(), c["expected"]["level"].get<double>(), 1e-10);
   EXPECT_NEAR(out["volume"].get<double>(), 1.0, 1e-12);
   r = run_cli(golden_mesh("cube_tilted.obj") + " --fraction 0.5 --json");
   ASSERT_EQ(r.status, 0) << r.err;
-  out = json::parse(r.out);
+  out = parse_json(r.out);
   EXPECT_NEAR(out["level"].get<double>(), 1.4475067636685255, 1e-10);
   // A list of volumes.
   r = run_cli(golden_mesh("unit_cube.obj") + " --volumes 0.25,0.5,1 --json");
   ASSERT_EQ(r.status, 0) << r.err;
-  out = json::parse(r.out);
+  out = parse_json(r.out);
   ASSERT_EQ(out["rows"].size(), 3u);
   EXPECT_NEAR(out["rows"][0]["level"].get<double>(), 0.25, 1e-12);
   EXPECT_NEAR(out["rows"][2]["level"].get<double>(), 1.0, 1e-12);
@@ -155,7 +156,7 @@ TEST(FuelCli, AttitudeGridAndAcceleration) {
   if (!std::filesystem::exists(mesh)) GTEST_SKIP() << "no bundled tank.obj";
   CliRun r = run_cli(mesh + " --pitch 10 --roll -5 --fraction 0.5 --json");
   ASSERT_EQ(r.status, 0) << r.err;
-  json out = json::parse(r.out);
+  json out = parse_json(r.out);
   const double p = 10 * std::numbers::pi / 180, f = -5 * std::numbers::pi / 180;
   EXPECT_NEAR(out["up"][0].get<double>(), std::sin(p), 1e-15);
   EXPECT_NEAR(out["up"][1].get<double>(), std::sin(f) * std::cos(p), 1e-15);
@@ -163,13 +164,13 @@ TEST(FuelCli, AttitudeGridAndAcceleration) {
   EXPECT_NEAR(out["fraction"].get<double>(), 0.5, 1e-12);
   r = run_cli(mesh + " --pitch 0,5 --roll 0,2,4 --table 4 --json");
   ASSERT_EQ(r.status, 0) << r.err;
-  out = json::parse(r.out);
+  out = parse_json(r.out);
   ASSERT_EQ(out["attitudes"].size(), 6u);
   EXPECT_EQ(out["attitudes"][5]["rows"].size(), 5u);
   EXPECT_EQ(out["attitudes"][5]["roll_deg"].get<double>(), 4);
   r = run_cli(mesh + " --accel 0,0,-9.81 --level 0.3 --json");
   ASSERT_EQ(r.status, 0) << r.err;
-  EXPECT_EQ(json::parse(r.out)["up"][2].get<double>(), 1);
+  EXPECT_EQ(parse_json(r.out)["up"][2].get<double>(), 1);
 }
 
 TEST(FuelCli, Errors) {
@@ -239,7 +240,7 @@ TEST(FuelCli, TopologyFromTheSharedReportRefusesInconsistentMeshes) {
   EXPECT_NE(r.err.find("--force"), std::string::npos) << r.err;
   r = run_cli(path.string() + " --level 0.5 --json --force");
   ASSERT_EQ(r.status, 0) << r.err;
-  json out = json::parse(r.out);
+  json out = parse_json(r.out);
   EXPECT_TRUE(out["forced"].get<bool>());
   EXPECT_FALSE(out["topology"]["orientation_consistent"].get<bool>());
   EXPECT_EQ(out["topology"]["inconsistent_edges"].get<int>(), 3);
@@ -248,7 +249,7 @@ TEST(FuelCli, TopologyFromTheSharedReportRefusesInconsistentMeshes) {
   // A good tank says so.
   r = run_cli(golden_mesh("unit_cube.obj") + " --level 0.5 --json");
   ASSERT_EQ(r.status, 0) << r.err;
-  out = json::parse(r.out);
+  out = parse_json(r.out);
   EXPECT_FALSE(out["forced"].get<bool>());
   EXPECT_TRUE(out["topology"]["closed"].get<bool>());
   EXPECT_EQ(out["topology"]["boundary_edges"].get<int>(), 0);
@@ -262,7 +263,7 @@ TEST(FuelCli, DensityAndMassScaleMassAndInertia) {
   for (const std::string& option : {std::string("--density 800"), std::string("--mass 800")}) {
     CliRun r = run_cli(cube + " --level 0.5 --json " + option);
     ASSERT_EQ(r.status, 0) << r.err;
-    const json out = json::parse(r.out);
+    const json out = parse_json(r.out);
     EXPECT_NEAR(out["density"].get<double>(), 800, 1e-12);
     EXPECT_NEAR(out["tank_mass"].get<double>(), 800, 1e-12);
     EXPECT_NEAR(out["mass"].get<double>(), 400, 1e-12);

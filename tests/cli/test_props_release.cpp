@@ -20,6 +20,7 @@
 #include "support/solids.hpp"
 
 using pgamesh::test::json;
+using pgamesh::test::parse_json;
 
 namespace {
 
@@ -68,7 +69,7 @@ void expect_same_props(const std::string& bytes, const std::string& flags) {
   std::filesystem::remove(path);
   ASSERT_EQ(mapped.status, 0) << mapped.err;
   ASSERT_EQ(piped.status, 0) << piped.err;
-  json a = json::parse(mapped.out), b = json::parse(piped.out);
+  json a = parse_json(mapped.out), b = parse_json(piped.out);
   EXPECT_EQ(a["file"], path);
   EXPECT_EQ(b["file"], "-");
   a.erase("file");

@@ -20,6 +20,7 @@ using pgamesh::test::flatten;
 using pgamesh::test::json;
 using pgamesh::test::near_group;
 using pgamesh::test::near_scalar;
+using pgamesh::test::parse_json;
 
 namespace {
 
@@ -73,7 +74,7 @@ TEST(MassCli, JsonMatchesGolden) {
     ASSERT_NE(c, nullptr);
     const CliRun r = run_cli("props \"" + golden_mesh(std::string(id) + ".obj") + "\" --json");
     ASSERT_EQ(r.status, 0) << r.err;
-    const json got = json::parse(r.out);
+    const json got = parse_json(r.out);
     const json& e = (*c)["expected"];
     const auto tol = pgamesh::test::tolerance_of(file, *c);
     EXPECT_EQ(got["triangles"], e["triangles"]);
@@ -104,10 +105,10 @@ TEST(MassCli, JsonMatchesGolden) {
 
 TEST(MassCli, DensityAndMassOptions) {
   const std::string cube = "props \"" + golden_mesh("unit_cube.obj") + "\" --json";
-  const json d = json::parse(run_cli(cube + " --density 2.5").out);
+  const json d = parse_json(run_cli(cube + " --density 2.5").out);
   EXPECT_DOUBLE_EQ(d["mass"].get<double>(), 2.5);
   EXPECT_DOUBLE_EQ(d["inertia_com"][0][0].get<double>(), 2.5 / 6);
-  const json m = json::parse(run_cli(cube + " --mass 4").out);
+  const json m = parse_json(run_cli(cube + " --mass 4").out);
   EXPECT_DOUBLE_EQ(m["density"].get<double>(), 4);
   EXPECT_EQ(m["density_source"], "mass");
   const CliRun both = run_cli(cube + " --mass 4 --density 2");
@@ -126,7 +127,7 @@ TEST(MassCli, OpenMeshIsNotMeaningful) {
   }
   const CliRun r = run_cli("props \"" + path.string() + "\" --json");
   ASSERT_EQ(r.status, 0) << r.err;
-  const json got = json::parse(r.out);
+  const json got = parse_json(r.out);
   EXPECT_EQ(got["closed"], false);
   EXPECT_EQ(got["boundary_edges"], 4);
   EXPECT_DOUBLE_EQ(got["gap_area"].get<double>(), 1);
@@ -146,8 +147,8 @@ TEST(MassCli, StreamedStlMatchesTopologyPath) {
     std::ofstream out(path, std::ios::binary);
     out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
   }
-  const json fast = json::parse(run_cli("props \"" + path.string() + "\" --json --fast").out);
-  const json full = json::parse(run_cli("props \"" + path.string() + "\" --json").out);
+  const json fast = parse_json(run_cli("props \"" + path.string() + "\" --json --fast").out);
+  const json full = parse_json(run_cli("props \"" + path.string() + "\" --json").out);
   EXPECT_EQ(fast["streamed"], true);
   EXPECT_EQ(full["streamed"], false);
   EXPECT_TRUE(fast["closed"].is_null());
@@ -167,8 +168,8 @@ TEST(MassCli, FusedAsciiStlMatchesTopologyPathAndKeepsErrorPositions) {
                     ("pgamesh_props_ascii_" + std::to_string(::getpid()) + ".stl");
   const std::string text = pgamesh::write_mesh_bytes(m, pgamesh::MeshFormat::stl_ascii);
   std::ofstream(path, std::ios::binary) << text;
-  const json fast = json::parse(run_cli("props \"" + path.string() + "\" --json --fast").out);
-  const json full = json::parse(run_cli("props \"" + path.string() + "\" --json").out);
+  const json fast = parse_json(run_cli("props \"" + path.string() + "\" --json --fast").out);
+  const json full = parse_json(run_cli("props \"" + path.string() + "\" --json").out);
   EXPECT_EQ(fast["streamed"], true);
   EXPECT_EQ(fast["format"], "stl-ascii");
   EXPECT_EQ(full["streamed"], false);
@@ -217,7 +218,7 @@ TEST(MassCli, InwardMeshReportsNegativeVolume) {
   if (dir.empty()) GTEST_SKIP() << "../shared/meshes not found";
   const CliRun r = run_cli("props \"" + dir + "/geomview/mushroom.off\" --json");
   ASSERT_EQ(r.status, 0) << r.err;
-  const json got = json::parse(r.out);
+  const json got = parse_json(r.out);
   EXPECT_LT(got["volume"].get<double>(), 0);
   EXPECT_EQ(got["meaningful"], false);
 }
@@ -255,7 +256,7 @@ TEST(MassCli, ReadableOutputStatesTheConvention) {
 
 TEST(MassCli, MjcfQuaternionTurnsTheMeshFrameOntoThePrincipalAxes) {
   const std::string mesh = "props \"" + golden_mesh("ellipsoid_L3_far.obj") + "\"";
-  const json got = json::parse(run_cli(mesh + " --json").out);
+  const json got = parse_json(run_cli(mesh + " --json").out);
   const std::string mjcf = run_cli(mesh + " --mjcf").out;
   const auto at = mjcf.find("quat=\"");
   ASSERT_NE(at, std::string::npos);

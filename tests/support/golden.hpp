@@ -17,11 +17,16 @@ namespace pgamesh::test {
 
 using json = nlohmann::json;
 
-inline json load_golden(const std::string& name) {
-  std::ifstream in(std::string(PGAMESH_GOLDEN_DIR) + "/" + name);
-  if (!in) throw std::runtime_error("cannot open golden file " + name);
-  return json::parse(in);
-}
+// The two JSON parses are compiled once, in golden.cpp: nlohmann's parser is the costliest template
+// a test file would otherwise instantiate (seconds per file optimised, tens of seconds under the
+// sanitizers), and many test files read JSON.
+
+/// Parses JSON text (e.g. the CLI's --json output); throws json::parse_error when it is not JSON.
+json parse_json(const std::string& text);
+
+/// Reads and parses the golden file NAME in tests/data/golden; throws std::runtime_error when it
+/// cannot be opened and json::parse_error when it is not JSON.
+json load_golden(const std::string& name);
 
 struct Tolerance {
   double rel = 1e-12, abs = 1e-12;
