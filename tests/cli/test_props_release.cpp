@@ -170,7 +170,7 @@ TEST(PropsRelease, PlyWithoutAFaceListReportsAsTheMeshPath) {
     const CliRun r = run_cli("props \"" + path + "\" --json --no-topology");
     std::filesystem::remove(path);
     EXPECT_EQ(r.status, 0) << r.err;
-    json j = json::parse(r.out);
+    json j = parse_json(r.out);
     j.erase("file");
     j.erase("format");
     return j;
