@@ -21,6 +21,7 @@
 #include "pgamesh/mesh/mass_properties.hpp"
 #include "pgamesh/mesh/ply_mass_properties.hpp"
 #include "pgamesh/mesh/read_mesh.hpp"
+#include "support/byte_order.hpp"
 #include "support/solids.hpp"
 
 namespace pgamesh {
@@ -36,14 +37,7 @@ struct Layout {
   bool extras = false;  // a normal before x, a flag before the faces' list, an ignored element
 };
 
-template <class T>
-void put(std::string& out, T value, bool big) {
-  unsigned char b[sizeof(T)];
-  std::memcpy(b, &value, sizeof(T));
-  if (big == (std::endian::native == std::endian::little))
-    for (std::size_t i = 0; i < sizeof(T) / 2; ++i) std::swap(b[i], b[sizeof(T) - 1 - i]);
-  out.append(reinterpret_cast<const char*>(b), sizeof(T));
-}
+using test::put;
 
 void put_integer(std::string& out, const std::string& type, std::int64_t v, bool big) {
   if (type == "uchar") put<std::uint8_t>(out, static_cast<std::uint8_t>(v), big);

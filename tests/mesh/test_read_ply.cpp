@@ -8,23 +8,16 @@
 #include <limits>
 
 #include "pgamesh/mesh/read_mesh.hpp"
+#include "support/byte_order.hpp"
 #include "support/read_helpers.hpp"
 
 namespace pgamesh {
 namespace {
 
 using test::read_error;
+using test::put;
+using test::read_error;
 using test::read_text;
-
-// Appends the bytes of a value in the chosen byte order.
-template <class T>
-void put(std::string& out, T value, bool big) {
-  unsigned char b[sizeof(T)];
-  std::memcpy(b, &value, sizeof(T));
-  if (big == (std::endian::native == std::endian::little))
-    for (std::size_t i = 0; i < sizeof(T) / 2; ++i) std::swap(b[i], b[sizeof(T) - 1 - i]);
-  out.append(reinterpret_cast<const char*>(b), sizeof(T));
-}
 
 // A square pyramid: 5 vertices, a quad base and 4 triangles (outward).
 const Vec3d kApex{0.5, 0.5, 1.25};
