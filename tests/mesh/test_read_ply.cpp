@@ -14,7 +14,6 @@
 namespace pgamesh {
 namespace {
 
-using test::read_error;
 using test::put;
 using test::read_error;
 using test::read_text;
