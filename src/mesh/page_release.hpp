@@ -7,8 +7,16 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 
 namespace pgamesh::detail {
+
+// The whole pages inside [from, to): addresses rounded inwards to the system's page boundaries
+// (an empty range, end <= begin, when no whole page lies inside).
+struct PageRange {
+  std::uintptr_t begin = 0, end = 0;
+};
+PageRange whole_pages(const void* from, const void* to);
 
 // Releases the whole pages inside [from, to) (rounded inwards to page boundaries).
 void release_pages(const void* from, const void* to);

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "page_release.hpp"
 #include "two_threads.hpp"
 
 namespace pgamesh::detail {
@@ -19,11 +20,12 @@ namespace pgamesh::detail {
 // on a failure, the pages are faulted in later by whoever touches them first.
 inline void populate_pages(void* data, std::size_t bytes, bool parallel) {
 #ifdef MADV_POPULATE_WRITE
-  constexpr std::uintptr_t page = 4096;
-  const auto begin = (reinterpret_cast<std::uintptr_t>(data) + page - 1) & ~(page - 1);
-  const auto end = (reinterpret_cast<std::uintptr_t>(data) + bytes) & ~(page - 1);
-  if (end <= begin) return;
-  const std::uintptr_t mid = begin + ((end - begin) / 2 & ~(page - 1));
+  const PageRange whole = whole_pages(data, static_cast<const char*>(data) + bytes);
+  if (whole.end <= whole.begin) return;
+  // The halves split on a page boundary: the middle rounded down.
+  const auto* first = reinterpret_cast<const char*>(whole.begin);
+  const std::uintptr_t begin = whole.begin, end = whole.end,
+                       mid = whole_pages(first, first + (end - begin) / 2).end;
   auto populate = [](std::uintptr_t from, std::uintptr_t to) {
     if (to > from) madvise(reinterpret_cast<void*>(from), to - from, MADV_POPULATE_WRITE);
   };
