@@ -235,11 +235,9 @@ BoundarySums face_pass(const WeldedTriangles& mesh, Vec3d reference, detail::Top
         for (std::size_t f = begin; f < end; ++f) {
           const std::uint32_t* c = corner + 3 * f;
           const std::array<Vec3d, 3> v{p[c[0]], p[c[1]], p[c[2]]};
-          // add_triangle, with the carrier's norm kept for the tally
+          double carrier_norm = 0;
           const pga3::Plane<double> carrier =
-              add_tetrahedron(s, v[0] - reference, v[1] - reference, v[2] - reference);
-          const double carrier_norm = pga3::norm(carrier);
-          add_face_carrier(s, carrier, carrier_norm);
+              add_triangle(s, v[0] - reference, v[1] - reference, v[2] - reference, carrier_norm);
           detail::tally_triangle(tally, static_cast<std::uint32_t>(f), collapsed(corner, f), v,
                                  carrier, carrier_norm);
         }

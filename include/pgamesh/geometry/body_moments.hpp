@@ -76,12 +76,22 @@ inline void add_face_carrier(BoundarySums& s, const pga3::Plane<double>& f) {
   add_face_carrier(s, f, pga3::norm(f));
 }
 
+// Adds the triangle (a, b, c) as add_triangle below does, and also gives the norm ‖F‖ of its
+// carrier in `norm_f`, for a caller that sums it again (the topology pass's face tally): one
+// square root serves both.
+inline pga3::Plane<double> add_triangle(BoundarySums& s, Vec3d a, Vec3d b, Vec3d c,
+                                        double& norm_f) {
+  const pga3::Plane<double> f = add_tetrahedron(s, a, b, c);
+  norm_f = pga3::norm(f);
+  add_face_carrier(s, f, norm_f);
+  return f;
+}
+
 // Adds the triangle (a, b, c), coordinates relative to the reference point, and returns its
 // carrier F = a ∨ b ∨ c (for a caller that sums more of it, as the topology pass does).
 inline pga3::Plane<double> add_triangle(BoundarySums& s, Vec3d a, Vec3d b, Vec3d c) {
-  const pga3::Plane<double> f = add_tetrahedron(s, a, b, c);
-  add_face_carrier(s, f);
-  return f;
+  double norm_f = 0;
+  return add_triangle(s, a, b, c, norm_f);
 }
 
 // Adds the polygon v[0], …, v[n−1] (n ≥ 3, coordinates relative to the reference point) without
