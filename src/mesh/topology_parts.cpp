@@ -57,12 +57,19 @@ void write_notes(TopologyReport& r) {
   if (r.components > 1) r.notes.push_back(n(r.components) + " connected components");
 }
 
+// The mean of k corners, corner(i) the i-th.
+template <class CornerAt>
+Vec3d centroid_of(std::uint32_t k, const CornerAt& corner) {
+  Vec3d c{};
+  for (std::uint32_t i = 0; i < k; ++i) c += corner(i);
+  return k > 0 ? c / static_cast<double>(k) : c;
+}
+
 // The mean of the face's corners.
 Vec3d face_centroid(const WeldedFaces& mesh, std::uint32_t f) {
-  const std::uint32_t begin = mesh.begin(f), k = mesh.size(f);
-  Vec3d c{};
-  for (std::uint32_t i = 0; i < k; ++i) c += mesh.corner_position(begin + i);
-  return k > 0 ? c / static_cast<double>(k) : c;
+  const std::uint32_t begin = mesh.begin(f);
+  return centroid_of(mesh.size(f),
+                     [&](std::uint32_t i) { return mesh.corner_position(begin + i); });
 }
 
 // 2 × the face's vector area about its own first corner (polygon_normal): exact zero for a face
@@ -75,15 +82,16 @@ Vec3d own_normal(const WeldedFaces& mesh, std::uint32_t f) {
 }
 
 // The surface parts of polygon_face_sums — area2, carrier_sum, volume6, all the report uses —
-// from the same fan carriers with the same additions, without the first and second moments.
-BoundarySums face_surface_sums(const WeldedFaces& mesh, std::uint32_t f, Vec3d ref) {
+// from the same fan carriers with the same additions, without the first and second moments: of
+// the k corners corner(i).
+template <class CornerAt>
+BoundarySums surface_sums(std::uint32_t k, const CornerAt& corner, Vec3d ref) {
   BoundarySums p;
-  const std::uint32_t begin = mesh.begin(f), k = mesh.size(f);
   if (k < 3) return p;
-  const Vec3d a = mesh.corner_position(begin) - ref;
-  Vec3d b = mesh.corner_position(begin + 1) - ref;
+  const Vec3d a = corner(0) - ref;
+  Vec3d b = corner(1) - ref;
   for (std::uint32_t i = 2; i < k; ++i) {
-    const Vec3d c = mesh.corner_position(begin + i) - ref;
+    const Vec3d c = corner(i) - ref;
     const pga3::Plane<double> carrier = triangle_carrier(a, b, c);
     p.volume6 += origin_join(carrier);  // as add_tetrahedron
     add_face_carrier(p, carrier);
@@ -91,6 +99,13 @@ BoundarySums face_surface_sums(const WeldedFaces& mesh, std::uint32_t f, Vec3d r
   }
   if (k > 3) p.area2 = pga3::norm(p.carrier_sum);
   return p;
+}
+
+// surface_sums of face f.
+BoundarySums face_surface_sums(const WeldedFaces& mesh, std::uint32_t f, Vec3d ref) {
+  const std::uint32_t begin = mesh.begin(f);
+  return surface_sums(
+      mesh.size(f), [&](std::uint32_t i) { return mesh.corner_position(begin + i); }, ref);
 }
 
 // total += s for the surface parts (BoundarySums::operator+= field by field).
@@ -143,7 +158,7 @@ void tally_degenerate(TopologyTally& t, std::uint32_t f, bool collapsed, std::ui
   FaceLocation loc;
   loc.face = f;
   loc.area = own_area;
-  loc.centroid = face_centroid(t.mesh, f);
+  loc.centroid = centroid_of(k, corner);
   if (zero) {
     if (r.zero_area_faces++ < t.cap) r.zero_area_list.push_back(loc);
   } else {
@@ -183,15 +198,28 @@ void tally_triangle(TopologyTally& t, std::uint32_t f, bool collapsed,
   tally_degenerate(t, f, collapsed, 3, [&](std::size_t i) { return corner[i]; });
 }
 
-void tally_component_sums(TopologyTally& t, std::span<const std::uint32_t> face_component) {
+bool start_component_sums(TopologyTally& t) {
   const std::size_t n = t.components.size();
   t.area2.assign(n, 0.0);
   t.volume6.assign(n, 0.0);
   if (n == 1 && t.components[0].faces == t.r.faces) {
     t.area2[0] = t.total.area2;
     t.volume6[0] = t.total.volume6;
-    return;
+    return true;
   }
+  return false;
+}
+
+void add_component_triangle(TopologyTally& t, std::uint32_t component,
+                            const std::array<Vec3d, 3>& corner) {
+  const BoundarySums s = surface_sums(
+      3, [&](std::uint32_t i) { return corner[i]; }, t.r.reference_point);
+  t.area2[component] += s.area2;
+  t.volume6[component] += s.volume6;
+}
+
+void tally_component_sums(TopologyTally& t, std::span<const std::uint32_t> face_component) {
+  if (start_component_sums(t)) return;
   for (std::size_t f = 0; f < face_component.size(); ++f) {
     const std::uint32_t k = face_component[f];
     if (k == no_edge) continue;

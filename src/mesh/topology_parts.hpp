@@ -7,6 +7,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <utility>
 #include <vector>
@@ -22,6 +23,9 @@ struct WeldedFaces {
   std::span<const std::uint32_t> representative;  // welded vertex → lowest input vertex; empty: w
   std::span<const std::uint32_t> corners;         // corner → welded vertex
   std::span<const std::uint32_t> face_offsets;    // CSR; empty when every face is a triangle
+  // When `corners` is empty: corner c's welded vertex, looked up elsewhere (the PLY pass keeps no
+  // corner array and reads the few faces the report names from the file: ply_topology.cpp).
+  std::function<std::uint32_t(std::uint32_t)> corner_lookup = {};
 
   std::uint32_t begin(std::size_t f) const {
     return face_offsets.empty() ? static_cast<std::uint32_t>(3 * f) : face_offsets[f];
@@ -29,7 +33,9 @@ struct WeldedFaces {
   std::uint32_t size(std::size_t f) const {
     return face_offsets.empty() ? 3 : face_offsets[f + 1] - face_offsets[f];
   }
-  Vec3d corner_position(std::uint32_t c) const { return positions[corners[c]]; }
+  Vec3d corner_position(std::uint32_t c) const {
+    return positions[corners.empty() ? corner_lookup(c) : corners[c]];
+  }
   std::uint32_t input_vertex(std::uint32_t w) const {
     return representative.empty() ? w : representative[w];
   }
@@ -70,6 +76,13 @@ void tally_triangle(TopologyTally& t, std::uint32_t f, bool collapsed,
 // or no_edge. When one component holds every face its sums are the total's (the same additions in
 // the same order); otherwise a second pass over the faces.
 void tally_component_sums(TopologyTally& t, std::span<const std::uint32_t> face_component);
+
+// tally_component_sums in parts, for a pass that keeps no corner array: sizes the per-component
+// sums and returns true when one component holds every face (its sums are the total's); else call
+// add_component_triangle for every face that has a component, in face order.
+bool start_component_sums(TopologyTally& t);
+void add_component_triangle(TopologyTally& t, std::uint32_t component,
+                            const std::array<Vec3d, 3>& corner);
 
 // The edge {v0 < v1} with `uses` half-edges, `forward` of them running v0 → v1, lowest face
 // `face` in `component`: boundary, inconsistent, non-manifold. Call in edge order ((v0, v1)

@@ -18,11 +18,8 @@ namespace pgamesh {
 
 namespace {
 
-// An edge that is not used exactly twice in opposite directions, kept until the components are
-// known.
-struct OddEdge {
-  std::uint32_t v0, v1, face, uses, forward;
-};
+using detail::EdgePart;
+using detail::OddEdge;
 
 // What the edge pass finds.
 struct EdgePass {
@@ -52,14 +49,6 @@ std::size_t unreferenced_vertices(const WeldedTriangles& mesh) {
   return static_cast<std::size_t>(std::count(referenced.begin(), referenced.end(), false));
 }
 
-// What one part of the edge pass finds among the edges of its range of lower ends.
-struct EdgePart {
-  std::size_t edges = 0;
-  std::vector<OddEdge> odd;                                         // in edge order
-  std::vector<std::uint32_t> sides;                                 // boundary half-edges
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> duplicates;  // (face, earlier face)
-};
-
 // The edges whose lower end is in [v_begin, v_end): each vertex's bucket (its half-edges, in
 // ascending order, bucket[start[v], start[v + 1])) grouped by upper end, one group per edge, edges
 // in (v0, v1) order; the faces on each edge united in `parent`, shared with the other part.
@@ -74,36 +63,10 @@ void group_edges(const std::uint32_t* corner, const std::uint32_t* start,
       group.emplace_back(std::max(corner[h], head(corner, h)), h);
     }
     detail::sort_by_upper_end(group);
-    for (std::size_t i = 0; i < group.size();) {
-      const std::uint32_t upper = group[i].first;
-      std::size_t end = i + 1;
-      while (end < group.size() && group[end].first == upper) ++end;
-      ++out.edges;
-      const std::uint32_t first_face = group[i].second / 3;
-      std::uint32_t forward = 0, root = first_face;
-      for (std::size_t j = i; j < end; ++j) {
-        const std::uint32_t h = group[j].second;
-        forward += corner[h] == v ? 1 : 0;
-        if (j > i) root = detail::unite_roots_shared(parent, root, h / 3);
-        // Two triangles on this edge are the same vertex set when their third vertices agree;
-        // each face is matched on its first side (k = 0) against the lower faces on it, the
-        // lowest match first (the half-edges ascend), so each duplicate names the lowest copy.
-        if (h % 3 == 0) {
-          const std::uint32_t third = corner[h + 2];
-          for (std::size_t m = i; m < j; ++m) {
-            const std::uint32_t o = group[m].second;
-            if (corner[3 * (o / 3) + (o % 3 + 2) % 3] == third) {
-              out.duplicates.emplace_back(h / 3, o / 3);
-              break;
-            }
-          }
-        }
-      }
-      const auto uses = static_cast<std::uint32_t>(end - i);
-      if (uses == 1) out.sides.push_back(group[i].second);
-      if (uses != 2 || forward != 1) out.odd.push_back({v, upper, first_face, uses, forward});
-      i = end;
-    }
+    detail::judge_vertex_edges(
+        v, group,
+        [&](const auto& e) { return corner[3 * (e.second / 3) + (e.second % 3 + 2) % 3]; },
+        [&](const auto& e) { return corner[e.second] == v; }, parent, out);
   }
 }
 
@@ -199,26 +162,15 @@ EdgePass edge_pass(const WeldedTriangles& mesh, bool parallel) {
   out.duplicates = std::move(low.duplicates);
   out.duplicates.insert(out.duplicates.end(), high.duplicates.begin(), high.duplicates.end());
 
-  // Components numbered by their lowest face. Every parent pointer points down (parent[f] ≤ f,
-  // equal at a root) and stays within its set, so one ascending pass overwrites the parent array
-  // with the numbers: parent[f] < f has already been given its component's number.
-  std::vector<std::uint32_t>& component = parent;
+  // Components numbered by their lowest face.
   auto& components = out.components;
-  for (std::size_t f = 0; f < face_count; ++f) {
-    if (collapsed(corner, f)) {
-      component[f] = no_edge;  // no edges, no component; nothing points at it
-      continue;
-    }
-    const std::uint32_t p = parent[f];
-    if (p == f) {
-      component[f] = static_cast<std::uint32_t>(components.size());
-      components.push_back({});
-      components.back().first_face = static_cast<std::uint32_t>(f);
-    } else {
-      component[f] = component[p];
-    }
-    ++components[component[f]].faces;
-  }
+  detail::number_components(
+      parent.data(), face_count, [&](std::size_t f) { return collapsed(corner, f); }, no_edge,
+      [&](std::uint32_t first_face) {
+        components.push_back({});
+        components.back().first_face = first_face;
+      },
+      [&](std::uint32_t k) { ++components[k].faces; });
   out.component = std::move(parent);
   return out;
 }
