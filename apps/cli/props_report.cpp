@@ -9,6 +9,7 @@
 #include "pgamesh/geometry/bounding_box.hpp"
 #include "pgamesh/mesh/mapped_file.hpp"
 #include "pgamesh/mesh/ply_mass_properties.hpp"
+#include "pgamesh/mesh/ply_topology.hpp"
 #include "pgamesh/mesh/read_mesh.hpp"
 #include "pgamesh/mesh/stl_ascii_mass_properties.hpp"
 #include "pgamesh/mesh/stl_binary.hpp"
@@ -91,6 +92,30 @@ std::optional<PropsReport> summed_ply_report(std::span<const char> bytes, const 
   }
 }
 
+// The report of a binary PLY triangle mesh with exact-weld topology, its faces re-read from the
+// file rather than stored (ply_topology.hpp), or nullopt for a file that pass declines or finds
+// fault with: the careful reader then reads it again and reports exactly what it reports.
+std::optional<PropsReport> ply_topology_report(std::span<const char> bytes, const std::string& name,
+                                               const PropsOptions& options, bool release_pages) {
+  const MeshFormat format =
+      options.format == MeshFormat::unknown ? detect_format(bytes) : options.format;
+  if (!options.topology || options.topology_options.weld_tolerance != 0 ||
+      (format != MeshFormat::ply_binary_le && format != MeshFormat::ply_binary_be))
+    return std::nullopt;
+  try {
+    MeshSource source;
+    auto props = ply_triangle_props(bytes, name, source, options.mass, options.topology_options,
+                                    release_pages);
+    if (!props) return std::nullopt;
+    PropsReport r = mass_report(std::move(props->mass), source, options);
+    r.topology = std::move(props->topology);
+    judge(r);
+    return r;
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+}
+
 }  // namespace
 
 PropsReport props_of_mesh(const Mesh& mesh, const MeshSource& source, const PropsOptions& options) {
@@ -154,6 +179,7 @@ PropsReport props_of(std::span<const char> bytes, const std::string& name,
     }
   }
   if (auto r = summed_ply_report(bytes, name, options, release_records)) return std::move(*r);
+  if (auto r = ply_topology_report(bytes, name, options, release_records)) return std::move(*r);
   // The careful readers, releasing the file's pages as they parse (release_records); the mesh is
   // then handed to the topology pass, which frees it once welded (topology.hpp).
   MeshSource source;

@@ -116,12 +116,21 @@ MassProperties mesh_mass_properties_from_sums(const BoundarySums& sums, Vec3d re
                                               std::span<const Vec3d> vertices, std::uint64_t faces,
                                               std::uint64_t triangles, const MassOptions& options,
                                               bool single_precision) {
+  return mesh_mass_properties_from_sums(
+      sums, reference, single_precision ? bounding_box(vertices) : Box3{}, vertices.size(), faces,
+      triangles, options, single_precision);
+}
+
+MassProperties mesh_mass_properties_from_sums(const BoundarySums& sums, Vec3d reference,
+                                              const Box3& box, std::size_t vertex_count,
+                                              std::uint64_t faces, std::uint64_t triangles,
+                                              const MassOptions& options, bool single_precision) {
   MassProperties p = mass_properties_from_sums(sums, reference, options);
   p.faces = faces;
-  p.vertices = vertices.size();
+  p.vertices = vertex_count;
   p.triangles = triangles;
   if (single_precision)
-    if (auto w = float32_precision_warning(bounding_box(vertices))) p.warnings.push_back(*w);
+    if (auto w = float32_precision_warning(box)) p.warnings.push_back(*w);
   return p;
 }
 

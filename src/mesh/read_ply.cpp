@@ -16,163 +16,11 @@
 #include "pgamesh/input_error.hpp"
 #include "pgamesh/mesh/face_sums.hpp"
 #include "pgamesh/mesh/reference_point.hpp"
+#include "ply_header.hpp"
 #include "readers.hpp"
 #include "text_cursor.hpp"
 
 namespace pgamesh::detail {
-
-namespace {
-
-enum class PlyType { none, i8, u8, i16, u16, i32, u32, f32, f64 };
-
-PlyType ply_type(std::string_view w) {
-  if (w == "char" || w == "int8") return PlyType::i8;
-  if (w == "uchar" || w == "uint8") return PlyType::u8;
-  if (w == "short" || w == "int16") return PlyType::i16;
-  if (w == "ushort" || w == "uint16") return PlyType::u16;
-  if (w == "int" || w == "int32") return PlyType::i32;
-  if (w == "uint" || w == "uint32") return PlyType::u32;
-  if (w == "float" || w == "float32") return PlyType::f32;
-  if (w == "double" || w == "float64") return PlyType::f64;
-  return PlyType::none;
-}
-
-std::size_t type_size(PlyType t) {
-  switch (t) {
-    case PlyType::i8:
-    case PlyType::u8:
-      return 1;
-    case PlyType::i16:
-    case PlyType::u16:
-      return 2;
-    case PlyType::i32:
-    case PlyType::u32:
-    case PlyType::f32:
-      return 4;
-    case PlyType::f64:
-      return 8;
-    case PlyType::none:
-      break;
-  }
-  return 0;
-}
-
-bool is_integer(PlyType t) {
-  return t != PlyType::f32 && t != PlyType::f64 && t != PlyType::none;
-}
-
-struct PlyProperty {
-  std::string name;
-  PlyType type = PlyType::none;        // the value type (of each list entry for lists)
-  PlyType count_type = PlyType::none;  // set for lists only
-  bool is_list() const { return count_type != PlyType::none; }
-};
-
-struct PlyElement {
-  std::string name;
-  std::uint64_t count = 0;
-  std::vector<PlyProperty> props;
-  const char* at = nullptr;  // the `element` line, for errors
-};
-
-template <class U>
-U load_raw(const unsigned char* p, bool swap) {
-  U u;
-  std::memcpy(&u, p, sizeof u);
-  if (swap) {
-    if constexpr (sizeof(U) == 2) u = static_cast<U>(__builtin_bswap16(u));
-    if constexpr (sizeof(U) == 4) u = __builtin_bswap32(u);
-    if constexpr (sizeof(U) == 8) u = __builtin_bswap64(u);
-  }
-  return u;
-}
-
-// One binary value of type t as T: double for coordinates, std::int64_t for counts and indices
-// (which must not pass through double; the header check allows only integer types for them, so a
-// floating-point type read as an integer gives 0 here and never occurs).
-template <class T>
-T load_as(const unsigned char* p, PlyType t, bool swap) {
-  switch (t) {
-    case PlyType::i8:
-      return static_cast<std::int8_t>(p[0]);
-    case PlyType::u8:
-      return p[0];
-    case PlyType::i16:
-      return static_cast<std::int16_t>(load_raw<std::uint16_t>(p, swap));
-    case PlyType::u16:
-      return load_raw<std::uint16_t>(p, swap);
-    case PlyType::i32:
-      return static_cast<std::int32_t>(load_raw<std::uint32_t>(p, swap));
-    case PlyType::u32:
-      return load_raw<std::uint32_t>(p, swap);
-    case PlyType::f32:
-      if constexpr (std::is_floating_point_v<T>)
-        return std::bit_cast<float>(load_raw<std::uint32_t>(p, swap));
-      break;
-    case PlyType::f64:
-      if constexpr (std::is_floating_point_v<T>)
-        return std::bit_cast<double>(load_raw<std::uint64_t>(p, swap));
-      break;
-    case PlyType::none:
-      break;
-  }
-  return 0;
-}
-
-// The roles of the properties of the vertex and face elements.
-struct Layout {
-  int vertex_element = -1, face_element = -1;
-  int coord[3] = {-1, -1, -1};  // property index of x, y, z in the vertex element
-  int indices = -1;             // property index of the index list in the face element
-};
-
-struct Header {
-  MeshFormat format = MeshFormat::unknown;
-  std::vector<PlyElement> elements;
-  const char* data = nullptr;  // first byte after "end_header\n"
-};
-
-// Where the readers below put the faces: into the mesh (read_ply), or summed one by one and not
-// kept (read_ply_summing_faces). start() is called once the vertices are read, when the face
-// element begins; then, per face, add_corner() for each corner and end_face().
-struct StoredFaces {
-  Mesh& mesh;
-  void start(const Mesh&) {}
-  void reserve(std::size_t faces, std::size_t corners) {
-    mesh.face_offsets.reserve(faces + 1);
-    mesh.corners.reserve(corners);
-  }
-  void add_corner(std::uint32_t v) { mesh.corners.push_back(v); }
-  std::size_t corner_count() const { return mesh.corners.size(); }
-  void end_face() { mesh.face_offsets.push_back(static_cast<std::uint32_t>(mesh.corners.size())); }
-};
-
-struct SummedFaces {
-  explicit SummedFaces(PlyFaceSums& sums_out) : out(sums_out) {}
-  PlyFaceSums& out;
-  const Vec3d* vertices = nullptr;
-  StreamedChunkSums<> sums;
-  std::vector<std::uint32_t> face;  // the corners of the face being read
-  std::size_t corners = 0;
-  void start(const Mesh& mesh) {
-    vertices = mesh.vertices.data();
-    out.reference = reference_point(mesh.vertices);
-  }
-  void reserve(std::size_t, std::size_t) {}
-  void add_corner(std::uint32_t v) {
-    face.push_back(v);
-    ++corners;
-  }
-  std::size_t corner_count() const { return corners; }
-  // The face as mesh_boundary_sums adds it (face_sums.hpp), in the chunks of chunked_sums.
-  void end_face() {
-    add_mesh_face(sums.current(), vertices, face.data(), face.size(), out.reference);
-    sums.next();
-    ++out.faces;
-    if (face.size() >= 3) out.triangles += face.size() - 2;
-    face.clear();
-  }
-};
 
 Header parse_header(TextCursor& c) {
   Header h;
@@ -287,6 +135,50 @@ Layout find_layout(const Header& h, const TextCursor& c) {
     c.fail(c.begin, "PLY with faces but no 'vertex' element");
   return l;
 }
+
+namespace {
+
+// Where the readers below put the faces: into the mesh (read_ply), or summed one by one and not
+// kept (read_ply_summing_faces). start() is called once the vertices are read, when the face
+// element begins; then, per face, add_corner() for each corner and end_face().
+struct StoredFaces {
+  Mesh& mesh;
+  void start(const Mesh&) {}
+  void reserve(std::size_t faces, std::size_t corners) {
+    mesh.face_offsets.reserve(faces + 1);
+    mesh.corners.reserve(corners);
+  }
+  void add_corner(std::uint32_t v) { mesh.corners.push_back(v); }
+  std::size_t corner_count() const { return mesh.corners.size(); }
+  void end_face() { mesh.face_offsets.push_back(static_cast<std::uint32_t>(mesh.corners.size())); }
+};
+
+struct SummedFaces {
+  explicit SummedFaces(PlyFaceSums& sums_out) : out(sums_out) {}
+  PlyFaceSums& out;
+  const Vec3d* vertices = nullptr;
+  StreamedChunkSums<> sums;
+  std::vector<std::uint32_t> face;  // the corners of the face being read
+  std::size_t corners = 0;
+  void start(const Mesh& mesh) {
+    vertices = mesh.vertices.data();
+    out.reference = reference_point(mesh.vertices);
+  }
+  void reserve(std::size_t, std::size_t) {}
+  void add_corner(std::uint32_t v) {
+    face.push_back(v);
+    ++corners;
+  }
+  std::size_t corner_count() const { return corners; }
+  // The face as mesh_boundary_sums adds it (face_sums.hpp), in the chunks of chunked_sums.
+  void end_face() {
+    add_mesh_face(sums.current(), vertices, face.data(), face.size(), out.reference);
+    sums.next();
+    ++out.faces;
+    if (face.size() >= 3) out.triangles += face.size() - 2;
+    face.clear();
+  }
+};
 
 // ---- binary data
 // ---------------------------------------------------------------------------------

@@ -2,6 +2,7 @@
 // weld_binary_stl.cpp for float32 STL records), and the hash mixer they share.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -108,6 +109,34 @@ class WeldTable {
 
   std::vector<std::uint64_t> slots_;
   std::size_t mask_ = 0;
+};
+
+}  // namespace pgamesh::detail
+
+namespace pgamesh::detail {
+
+// The bits of three float32 coordinates: the key of the exact weld of float32 vertices.
+using Float32Key = std::array<std::uint32_t, 3>;
+
+// A float32 coordinate's bits with −0 folded to +0 (the bits of −0 are 0x80000000), so that the
+// two zeros weld while every other value welds only with itself.
+inline std::uint32_t folded_float32(std::uint32_t u) {
+  return u == 0x80000000u ? 0u : u;
+}
+
+// Keys keep their own bits (the representative's coordinates, −0 included), and hash and compare
+// folded.
+struct Float32KeyTraits {
+  static std::uint64_t hash(const Float32Key& k) {
+    const std::uint32_t x = folded_float32(k[0]), y = folded_float32(k[1]),
+                        z = folded_float32(k[2]);
+    return mix64(((std::uint64_t{x} << 32) | y) ^ mix64(z + 0x9e3779b97f4a7c15ULL));
+  }
+  static bool same(const Float32Key& a, const Float32Key& b) {
+    return folded_float32(a[0]) == folded_float32(b[0]) &&
+           folded_float32(a[1]) == folded_float32(b[1]) &&
+           folded_float32(a[2]) == folded_float32(b[2]);
+  }
 };
 
 }  // namespace pgamesh::detail

@@ -85,6 +85,13 @@ MassProperties mesh_mass_properties_from_sums(const BoundarySums& sums, Vec3d re
                                               std::uint64_t triangles, const MassOptions& options,
                                               bool single_precision);
 
+// The same, for a caller that keeps no array of the vertices as doubles: `box` is their bounding
+// box (read only with `single_precision`) and `vertex_count` their number.
+MassProperties mesh_mass_properties_from_sums(const BoundarySums& sums, Vec3d reference,
+                                              const Box3& box, std::size_t vertex_count,
+                                              std::uint64_t faces, std::uint64_t triangles,
+                                              const MassOptions& options, bool single_precision);
+
 // Mass properties of a mesh, accumulated about reference_point(mesh). When `source` says the
 // coordinates were float32, adds float32_precision_warning's warning.
 MassProperties mass_properties(const Mesh& mesh, const MassOptions& options = {},

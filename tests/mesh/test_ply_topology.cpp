@@ -1,0 +1,321 @@
+// The PLY topology pass that re-reads the faces from the file (ply_topology.hpp) against the Mesh
+// path (read_mesh_bytes, mass_properties, analyze_topology): every field, doubles bit for bit, on
+// meshes with each defect, real meshes, one pass and many, little- and big-endian; and the files
+// it declines, whose errors the CLI then reports as before.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "pgamesh/mesh/mass_properties.hpp"
+#include "pgamesh/mesh/ply_topology.hpp"
+#include "pgamesh/mesh/read_mesh.hpp"
+#include "pgamesh/mesh/topology.hpp"
+#include "pgamesh/mesh/welded_triangles.hpp"
+#include "pgamesh/mesh/write_mesh.hpp"
+#include "support/read_helpers.hpp"
+#include "support/same_topology.hpp"
+#include "support/solids.hpp"
+#include "topology_test_meshes.hpp"
+
+namespace pgamesh {
+namespace {
+
+using test::expect_same_report;
+
+void expect_same_mass(const MassProperties& a, const MassProperties& b) {
+  EXPECT_EQ(a.faces, b.faces);
+  EXPECT_EQ(a.triangles, b.triangles);
+  EXPECT_EQ(a.vertices, b.vertices);
+  EXPECT_SAME_VEC(a.reference_point, b.reference_point);
+  EXPECT_SAME_VEC(a.center_of_mass, b.center_of_mass);
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_SAME(a.principal.moments[k], b.principal.moments[k]);
+    for (int j = 0; j < 3; ++j) {
+      EXPECT_SAME(a.inertia_com[k][j], b.inertia_com[k][j]);
+      EXPECT_SAME(a.inertia_origin[k][j], b.inertia_origin[k][j]);
+    }
+  }
+  EXPECT_SAME(a.area, b.area);
+  EXPECT_SAME(a.volume, b.volume);
+  EXPECT_SAME(a.mass, b.mass);
+  EXPECT_SAME(a.density, b.density);
+  EXPECT_SAME(a.gap_area, b.gap_area);
+  EXPECT_SAME(a.carrier_sum.e0, b.carrier_sum.e0);
+  EXPECT_SAME_VEC(a.carrier_sum.normal(), b.carrier_sum.normal());
+  EXPECT_EQ(a.warnings, b.warnings);
+}
+
+std::string ply_bytes(const Mesh& m, MeshFormat format = MeshFormat::ply_binary_le) {
+  WriteOptions o;
+  o.single_precision = true;
+  return write_mesh_bytes(m, format, o);
+}
+
+std::optional<WeldedTriangleProps> new_path(const std::string& bytes, std::size_t budget = 0,
+                                            MeshSource* source_out = nullptr) {
+  MeshSource source;
+  TopologyOptions t;
+  t.list_cap = 1000;  // every location compared
+  auto props = ply_triangle_props({bytes.data(), bytes.size()}, "mem.ply", source, {}, t, false,
+                                  PlyPassBudget{budget});
+  if (source_out) *source_out = source;
+  return props;
+}
+
+// The new pass gives what the Mesh path gives, with the default budget and with budgets that
+// force several passes (1 half-edge: one range per vertex).
+void expect_same_as_mesh_path(const std::string& bytes) {
+  MeshSource careful_source;
+  const Mesh mesh = read_mesh_bytes({bytes.data(), bytes.size()}, "mem.ply", &careful_source);
+  const MassProperties mass = mass_properties(mesh, {}, &careful_source);
+  TopologyOptions t;
+  t.list_cap = 1000;
+  const TopologyReport report = analyze_topology(mesh, t);
+  for (std::size_t budget : {std::size_t{0}, std::size_t{1}, std::size_t{5}, std::size_t{64}}) {
+    SCOPED_TRACE("budget " + std::to_string(budget));
+    MeshSource source;
+    const auto props = new_path(bytes, budget, &source);
+    ASSERT_TRUE(props.has_value());
+    expect_same_mass(props->mass, mass);
+    expect_same_report(props->topology, report);
+    EXPECT_EQ(source.format, careful_source.format);
+    EXPECT_EQ(source.single_precision, careful_source.single_precision);
+    EXPECT_EQ(source.warnings, careful_source.warnings);
+  }
+}
+
+// A triangulated UV sphere (uv_sphere has quads).
+Mesh sphere(double r, int stacks, int slices) {
+  return test::triangulated(test::uv_sphere(r, stacks, slices));
+}
+
+void expect_same_both_endians(const Mesh& m) {
+  {
+    SCOPED_TRACE("little-endian");
+    expect_same_as_mesh_path(ply_bytes(m, MeshFormat::ply_binary_le));
+  }
+  {
+    SCOPED_TRACE("big-endian");
+    expect_same_as_mesh_path(ply_bytes(m, MeshFormat::ply_binary_be));
+  }
+}
+
+TEST(PlyTopology, ClosedCubeAndSphere) {
+  expect_same_both_endians(test::unit_cube());
+  expect_same_both_endians(test::translated(sphere(2.5, 12, 24), {1e3, -7, 0.25}));
+}
+
+TEST(PlyTopology, ClosedMeshFindsWhatTheMeshPathFinds) {
+  // Independent of the comparison: a closed cube's own figures.
+  const std::string bytes = ply_bytes(test::unit_cube());
+  const auto props = new_path(bytes, 1);
+  ASSERT_TRUE(props.has_value());
+  EXPECT_TRUE(props->topology.closed);
+  EXPECT_EQ(props->topology.edges, 18u);
+  EXPECT_EQ(props->topology.components, 1u);
+  EXPECT_EQ(props->mass.volume, 1.0);
+  EXPECT_EQ(props->mass.area, 6.0);
+}
+
+TEST(PlyTopology, OpenMesh) {
+  expect_same_both_endians(test::without_faces(sphere(1, 8, 16), {3, 4, 40}));
+}
+
+TEST(PlyTopology, InconsistentOrientation) {
+  expect_same_both_endians(test::with_flipped(test::unit_cube(), {2, 7}));
+}
+
+TEST(PlyTopology, NonManifoldEdge) {
+  Mesh m = test::unit_cube();
+  m.vertices.push_back({0.5, 0.5, 3});
+  m.add_face({0, 2, 8});  // a third face on the edge (0, 2)
+  expect_same_both_endians(m);
+}
+
+TEST(PlyTopology, DuplicatedAndCollapsedFaces) {
+  Mesh m = test::unit_cube();
+  m.add_face({0, 2, 3});  // a copy of face 0
+  m.add_face({3, 0, 2});  // the same vertices, rotated
+  m.add_face({1, 1, 5});  // collapsed: one vertex twice
+  m.vertices.push_back(m.vertices[4]);
+  m.add_face({4, 8, 6});  // collapsed once welded: vertex 8 = vertex 4
+  m.add_face({0, 1, 2});  // zero area? no: a real triangle inside the cube
+  expect_same_both_endians(m);
+}
+
+TEST(PlyTopology, CoincidentVerticesAndComponents) {
+  // Unshared vertices (every face its own three) weld; two cubes and a sphere are three components.
+  const Mesh m = test::merged(test::merged(test::unshared(test::unit_cube()),
+                                           test::translated(test::unit_cube(), {3, 0, 0})),
+                              test::flipped(test::translated(sphere(0.5, 6, 10), {0, 4, 0})));
+  expect_same_both_endians(m);
+}
+
+TEST(PlyTopology, UnreferencedVerticesAndDegenerateFaces) {
+  Mesh m = test::unit_cube();
+  m.vertices.push_back({9, 9, 9});        // unreferenced
+  m.vertices.push_back({0.5, 0, 0});      // on the edge (0, 1)
+  m.add_face({0, 9, 1});                  // zero area, not collapsed
+  m.vertices.push_back({0.5, 1e-12, 0});  // nearly on it
+  m.add_face({0, 1, 10});                 // small area
+  expect_same_both_endians(m);
+}
+
+TEST(PlyTopology, RealMeshesAsBinaryPly) {
+  const std::string dir = PGAMESH_SHARED_MESHES_DIR;
+  if (!std::filesystem::exists(dir)) GTEST_SKIP() << dir << " not found: skipped";
+  int compared = 0;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(dir)) {
+    const std::string ext = entry.path().extension().string();
+    if (!entry.is_regular_file() || entry.file_size() > (std::size_t{1} << 20) ||
+        (ext != ".stl" && ext != ".obj" && ext != ".off" && ext != ".ply"))
+      continue;
+    Mesh m;
+    try {
+      m = read_mesh(entry.path().string());
+    } catch (const std::exception&) {
+      continue;  // the folder holds files that are meant to fail
+    }
+    if (!all_triangles(m)) m = test::triangulated(m);
+    SCOPED_TRACE(entry.path().string());
+    expect_same_as_mesh_path(ply_bytes(m));
+    ++compared;
+  }
+  EXPECT_GT(compared, 5);
+}
+
+TEST(PlyTopology, RealPlyFilesAsGiven) {
+  // A binary float32 triangle mesh is taken and equal to the Mesh path; an ASCII one declined.
+  const std::string binary = test::shared_mesh("assimp-testmodels/cube_binary.ply");
+  const std::string ascii = test::shared_mesh("octave-matgeom/dodecahedron.ply");
+  if (binary.empty() || ascii.empty()) GTEST_SKIP() << "../shared/meshes not found: skipped";
+  const auto slurp = [](const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  const std::string bytes = slurp(binary);
+  EXPECT_TRUE(new_path(bytes).has_value());
+  expect_same_as_mesh_path(bytes);
+  EXPECT_FALSE(new_path(slurp(ascii)).has_value());
+}
+
+// A binary little-endian PLY with a header of our own: `vertex` and `face` lines and raw data.
+std::string ply_with_header(const std::string& elements, const std::string& data) {
+  return "ply\nformat binary_little_endian 1.0\n" + elements + "end_header\n" + data;
+}
+
+template <class T>
+void put(std::string& s, T v) {
+  char b[sizeof v];
+  std::memcpy(b, &v, sizeof v);
+  s.append(b, sizeof v);
+}
+
+// Three vertices and one face (i, j, k), float coordinates, uchar count, int indices.
+std::string one_triangle(std::int32_t i, std::int32_t j, std::int32_t k, std::uint8_t count = 3) {
+  std::string d;
+  for (float x : {0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f, 0.f}) put(d, x);
+  put(d, count);
+  for (std::int32_t v : {i, j, k}) put(d, v);
+  return d;
+}
+
+const char* const vertex_then_face =
+    "element vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+    "element face 1\nproperty list uchar int vertex_indices\n";
+
+TEST(PlyTopology, TakesAPlainTriangle) {
+  const std::string bytes = ply_with_header(vertex_then_face, one_triangle(0, 1, 2));
+  const auto props = new_path(bytes);
+  ASSERT_TRUE(props.has_value());
+  EXPECT_EQ(props->topology.boundary_edges, 3u);
+  EXPECT_EQ(props->mass.area, 0.5);
+  expect_same_as_mesh_path(bytes);
+}
+
+TEST(PlyTopology, Declines) {
+  // Each of these goes to the careful reader.
+  EXPECT_FALSE(new_path(ply_with_header(vertex_then_face, one_triangle(0, 1, 3))));     // index
+  EXPECT_FALSE(new_path(ply_with_header(vertex_then_face, one_triangle(0, 1, -1))));    // index
+  EXPECT_FALSE(new_path(ply_with_header(vertex_then_face, one_triangle(0, 1, 2, 4))));  // quad
+  EXPECT_FALSE(new_path(ply_with_header(vertex_then_face, one_triangle(0, 1, 2).substr(0, 40))));
+  EXPECT_FALSE(new_path(ply_bytes(test::unit_cube_quads())));
+  EXPECT_FALSE(new_path(ply_bytes(test::unit_cube(), MeshFormat::ply_ascii)));
+  EXPECT_FALSE(new_path(write_mesh_bytes(test::unit_cube(), MeshFormat::ply_binary_le)));  // double
+  // Faces before vertices.
+  std::string faces_first;
+  put(faces_first, std::uint8_t{3});
+  for (std::int32_t v : {0, 1, 2}) put(faces_first, v);
+  for (float x : {0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f, 0.f}) put(faces_first, x);
+  EXPECT_FALSE(new_path(
+      ply_with_header("element face 1\nproperty list uchar int vertex_indices\n"
+                      "element vertex 3\nproperty float x\nproperty float y\nproperty float z\n",
+                      faces_first)));
+  // −0 and +0 weld, but the mass sums would see the input's bits: the Mesh path keeps them.
+  Mesh zeros = test::unit_cube();
+  zeros.vertices.push_back({-0.0, 0, 0});
+  zeros.add_face({8, 2, 3});
+  EXPECT_FALSE(new_path(ply_bytes(zeros)));
+  TopologyOptions tolerant;
+  tolerant.weld_tolerance = 1e-3;
+  MeshSource source;
+  const std::string cube = ply_bytes(test::unit_cube());
+  EXPECT_FALSE(ply_triangle_props({cube.data(), cube.size()}, "mem.ply", source, {}, tolerant));
+}
+
+struct CliRun {
+  int status = -1;
+  std::string out, err;
+};
+
+CliRun run_props(const std::string& bytes) {
+  const auto dir = std::filesystem::temp_directory_path();
+  const std::string stem = std::string("pgamesh_plytopo_") +
+                           ::testing::UnitTest::GetInstance()->current_test_info()->name() + "_" +
+                           std::to_string(::getpid());
+  const std::string ply = (dir / (stem + ".ply")).string();
+  const std::string out = (dir / (stem + ".out")).string(), err = (dir / (stem + ".err")).string();
+  std::ofstream(ply, std::ios::binary) << bytes;
+  const std::string cmd = std::string("\"") + PGAMESH_CLI_PATH + "\" props \"" + ply + "\" > \"" +
+                          out + "\" 2> \"" + err + "\"";
+  CliRun r;
+  const int raw = std::system(cmd.c_str());
+  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  const auto slurp = [](const std::string& path) {
+    std::ifstream in(path);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  r.out = slurp(out);
+  r.err = slurp(err);
+  for (const std::string& p : {ply, out, err}) std::filesystem::remove(p);
+  return r;
+}
+
+TEST(PlyTopology, CliReportsTheCarefulReadersErrors) {
+  const CliRun index = run_props(ply_with_header(vertex_then_face, one_triangle(0, 1, 7)));
+  EXPECT_NE(index.status, 0);
+  EXPECT_NE(index.err.find("vertex index 7 of face 0 is out of range (3 vertices)"),
+            std::string::npos)
+      << index.err;
+  const CliRun truncated =
+      run_props(ply_with_header(vertex_then_face, one_triangle(0, 1, 2).substr(0, 40)));
+  EXPECT_NE(truncated.status, 0);
+  EXPECT_NE(truncated.err.find("list length 3 in face 0 runs past the end of the file"),
+            std::string::npos)
+      << truncated.err;
+  const CliRun good = run_props(ply_with_header(vertex_then_face, one_triangle(0, 1, 2)));
+  EXPECT_EQ(good.status, 0) << good.err;
+  EXPECT_NE(good.out.find("open"), std::string::npos) << good.out;
+}
+
+}  // namespace
+}  // namespace pgamesh
