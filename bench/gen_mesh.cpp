@@ -1,7 +1,9 @@
 // Benchmark input generator: a closed, outward torus of about N triangles written as binary STL,
-// ASCII STL, OBJ, ASCII PLY or OFF. Coordinates are rounded to float32 first, so every format
-// holds the same numbers and every tool reads the same solid.
-//   pgamesh_gen_mesh TRIANGLES FORMAT OUT     FORMAT: stl | stl-ascii | obj | ply | off
+// ASCII STL, OBJ, ASCII PLY, binary PLY (little-endian float32 vertices, uchar/int faces: 19 B per
+// triangle) or OFF. Coordinates are rounded to float32 first, so every format holds the same
+// numbers and every tool reads the same solid.
+//   pgamesh_gen_mesh TRIANGLES FORMAT OUT     FORMAT: stl | stl-ascii | obj | ply | ply-bin | off
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -52,7 +54,8 @@ int fail(const char* what) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 4) return fail("usage: pgamesh_gen_mesh TRIANGLES stl|stl-ascii|obj|ply|off OUT");
+  if (argc != 4)
+    return fail("usage: pgamesh_gen_mesh TRIANGLES stl|stl-ascii|obj|ply|ply-bin|off OUT");
   const long long n = std::atoll(argv[1]);
   if (n < 8 || n > 200000000) return fail("TRIANGLES must be from 8 to 2e8");
   const std::string format = argv[2];
@@ -83,6 +86,20 @@ int main(int argc, char** argv) {
       std::fprintf(out, " endloop\nendfacet\n");
     }
     std::fprintf(out, "endsolid torus\n");
+  } else if (format == "ply-bin") {
+    if constexpr (std::endian::native != std::endian::little)
+      return fail("ply-bin is written on little-endian hosts only");
+    std::fprintf(out,
+                 "ply\nformat binary_little_endian 1.0\nelement vertex %zu\nproperty float "
+                 "x\nproperty float y\nproperty float z\nelement face %zu\nproperty list uchar "
+                 "int vertex_indices\nend_header\n",
+                 m.vertices(), m.triangles());
+    std::fwrite(m.xyz.data(), sizeof(float), m.xyz.size(), out);
+    for (std::size_t f = 0; f < m.triangles(); ++f) {
+      char rec[13] = {3};
+      std::memcpy(rec + 1, &m.t[3 * f], 12);
+      std::fwrite(rec, 1, 13, out);
+    }
   } else if (format == "obj" || format == "ply" || format == "off") {
     if (format == "ply")
       std::fprintf(out,
@@ -103,7 +120,7 @@ int main(int argc, char** argv) {
     }
   } else {
     std::fclose(out);
-    return fail("unknown format (stl, stl-ascii, obj, ply, off)");
+    return fail("unknown format (stl, stl-ascii, obj, ply, ply-bin, off)");
   }
   if (std::fclose(out) != 0) return fail("write failed");
   std::printf("%zu triangles, %zu vertices\n", m.triangles(), m.vertices());

@@ -11,6 +11,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <initializer_list>
 #include <optional>
 #include <string>
 #include <vector>
@@ -73,14 +74,15 @@ std::optional<WeldedTriangleProps> new_path(const std::string& bytes, std::size_
 
 // The new pass gives what the Mesh path gives, with the default budget and with budgets that
 // force several passes (1 half-edge: one range per vertex).
-void expect_same_as_mesh_path(const std::string& bytes) {
+void expect_same_as_mesh_path(const std::string& bytes,
+                              std::initializer_list<std::size_t> budgets = {0, 1, 5, 64}) {
   MeshSource careful_source;
   const Mesh mesh = read_mesh_bytes({bytes.data(), bytes.size()}, "mem.ply", &careful_source);
   const MassProperties mass = mass_properties(mesh, {}, &careful_source);
   TopologyOptions t;
   t.list_cap = 1000;
   const TopologyReport report = analyze_topology(mesh, t);
-  for (std::size_t budget : {std::size_t{0}, std::size_t{1}, std::size_t{5}, std::size_t{64}}) {
+  for (std::size_t budget : budgets) {
     SCOPED_TRACE("budget " + std::to_string(budget));
     MeshSource source;
     const auto props = new_path(bytes, budget, &source);
@@ -112,6 +114,15 @@ void expect_same_both_endians(const Mesh& m) {
 TEST(PlyTopology, ClosedCubeAndSphere) {
   expect_same_both_endians(test::unit_cube());
   expect_same_both_endians(test::translated(sphere(2.5, 12, 24), {1e3, -7, 0.25}));
+}
+
+TEST(PlyTopology, LargerOpenMeshInManyRanges) {
+  // 19 600 + 9 440 triangles with holes, flipped faces and a second component; ranges of 2 000
+  // half-edges (about 45 reads of the faces) and the default.
+  Mesh m = test::with_flipped(test::without_faces(sphere(1, 100, 100), {5, 700, 701, 9000}),
+                              {12, 13000});
+  m = test::merged(m, test::translated(sphere(0.25, 60, 80), {3, 0, 0}));
+  expect_same_as_mesh_path(ply_bytes(m), {0, 2000});
 }
 
 TEST(PlyTopology, ClosedMeshFindsWhatTheMeshPathFinds) {
