@@ -5,7 +5,7 @@
 # and ratios as a Markdown table.
 #
 #   bench/compare_peers.sh [TRIANGLES ...]          default: 1000 10000 100000 1000000
-#   FORMATS="stl stl-ascii obj ply" REPEAT=3 WORK=/tmp/pgamesh-bench BUILD=build/release CGAL=0|1
+#   FORMATS="stl stl-ascii obj ply ply-bin" REPEAT=3 WORK=/tmp/pgamesh-bench BUILD=build/release CGAL=0|1
 #
 # Peers (scripts/setup.sh bench installs them; missing ones are skipped): admesh (STL), a CGAL
 # program (bench/peers/cgal_props.cpp: PMP::volume/area/centroid), VTK vtkMassProperties
@@ -18,7 +18,7 @@ root=$(pwd)
 build=${BUILD:-build/release}
 work=${WORK:-/tmp/pgamesh-bench}
 repeat=${REPEAT:-3}
-formats=${FORMATS:-"stl stl-ascii obj ply"}
+formats=${FORMATS:-"stl stl-ascii obj ply ply-bin"}
 sizes=("$@")
 [ ${#sizes[@]} -eq 0 ] && sizes=(1000 10000 100000 1000000)
 mkdir -p "$work"
@@ -65,7 +65,7 @@ run_tool() {
 
 ext_of() {
   case $1 in
-    stl) echo bin.stl ;; stl-ascii) echo ascii.stl ;; *) echo "$1" ;;
+    stl) echo bin.stl ;; stl-ascii) echo ascii.stl ;; ply-bin) echo bin.ply ;; *) echo "$1" ;;
   esac
 }
 

@@ -18,4 +18,9 @@ void release_pages(const void* from, const void* to) {
   if (r.end > r.begin) madvise(reinterpret_cast<void*>(r.begin), r.end - r.begin, MADV_DONTNEED);
 }
 
+void map_small_pages(const void* from, const void* to) {
+  const PageRange r = whole_pages(from, to);
+  if (r.end > r.begin) madvise(reinterpret_cast<void*>(r.begin), r.end - r.begin, MADV_NOHUGEPAGE);
+}
+
 }  // namespace pgamesh::detail

@@ -21,6 +21,12 @@ PageRange whole_pages(const void* from, const void* to);
 // Releases the whole pages inside [from, to) (rounded inwards to page boundaries).
 void release_pages(const void* from, const void* to);
 
+// Asks the kernel to map the whole pages inside [from, to) of a file mapping with small pages
+// only (madvise(MADV_NOHUGEPAGE)). The page cache may hold a file in 2 MB folios, and a fault
+// then maps a whole folio at once, up to 2 MB ahead of a reader that releases the pages behind
+// it: a pass that reads a file several times over arrays sized to the file sees that as peak.
+void map_small_pages(const void* from, const void* to);
+
 // Releases, in steps of `step` bytes, the pages of a byte range that a single reader passes from
 // front to back. Disabled (every call a no-op but one compare) unless constructed with `enabled`.
 class PageRelease {

@@ -8,9 +8,11 @@
 #include <algorithm>
 #include <array>
 #include <bit>
+#include <cstddef>
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <new>
 #include <optional>
 #include <span>
 #include <utility>
@@ -128,11 +130,42 @@ inline Vec3d position(const Float32Key& k) {
   return {std::bit_cast<float>(k[0]), std::bit_cast<float>(k[1]), std::bit_cast<float>(k[2])};
 }
 
+// The vertices' coordinates: float32 bits while the passes run, then turned into doubles in the
+// same storage, which is reserved at 24 B per vertex from the start. Only the first half is
+// touched until the conversion, so only it is resident: the doubles never sit beside a second,
+// float copy (which would be the pass's peak).
+class VertexStore {
+ public:
+  explicit VertexStore(std::size_t n) : storage_(new std::byte[n * sizeof(Vec3d)]), count_(n) {}
+
+  Float32Key* keys() { return std::launder(reinterpret_cast<Float32Key*>(storage_.get())); }
+  const Float32Key& operator[](std::size_t v) const {
+    return std::launder(reinterpret_cast<const Float32Key*>(storage_.get()))[v];
+  }
+  std::size_t size() const { return count_; }
+  void resize_down(std::size_t n) { count_ = n; }
+
+  // The coordinates as doubles, converted in place from the last vertex down: double v covers
+  // the bytes of keys 2v and 2v + 1, which are converted already (or v itself, read first).
+  std::span<const Vec3d> to_doubles() {
+    const Float32Key* k = keys();
+    for (std::size_t v = count_; v-- > 0;) {
+      const Float32Key key = k[v];
+      new (storage_.get() + v * sizeof(Vec3d)) Vec3d(position(key));
+    }
+    return {std::launder(reinterpret_cast<const Vec3d*>(storage_.get())), count_};
+  }
+
+ private:
+  std::unique_ptr<std::byte[]> storage_;
+  std::size_t count_;
+};
+
 // The input vertices' float32 bits, or nullopt when one is NaN or infinite; `box` their
 // bounding box as the doubles read_mesh_bytes() would hold (reference_point's box).
-std::optional<std::vector<Float32Key>> read_vertices(const PlainPly& ply, bool release_pages,
-                                                     Box3& box) {
-  std::vector<Float32Key> keys(ply.vertex_count);
+std::optional<VertexStore> read_vertices(const PlainPly& ply, bool release_pages, Box3& box) {
+  VertexStore store(ply.vertex_count);
+  Float32Key* keys = store.keys();
   detail::PageRelease release(ply.vertices, release_pages, release_step);
   for (std::size_t i = 0; i < ply.vertex_count; ++i) {
     release.passed(ply.vertices + i * ply.vertex_stride);
@@ -144,13 +177,13 @@ std::optional<std::vector<Float32Key>> read_vertices(const PlainPly& ply, bool r
     box.add(position(keys[i]));
   }
   release.finish(ply.faces);
-  return keys;
+  return store;
 }
 
 // The exact weld of weld_map (weld.hpp) on the float32 bits: the same classes (bitwise equal
 // coordinates, −0 = +0), numbering (by first vertex) and representatives (the first vertex).
 struct Float32Weld {
-  std::vector<Float32Key> positions;          // welded vertex → coordinates
+  VertexStore positions;                      // welded vertex → coordinates
   std::vector<std::uint32_t> to_welded;       // input → welded vertex; empty: nothing merged
   std::vector<std::uint32_t> representative;  // welded → lowest input vertex; empty likewise
 
@@ -171,15 +204,16 @@ struct KeysInPlace {
 
 // Welds `keys` in place, or nullopt when a vertex welds to one whose bits differ (−0 and +0):
 // the input coordinates of the mass sums would then not be the welded ones this pass keeps.
-std::optional<Float32Weld> weld_float32(std::vector<Float32Key>&& keys) {
-  Float32Weld w;
-  const std::size_t n = keys.size();
+std::optional<Float32Weld> weld_float32(VertexStore&& store) {
+  Float32Weld w{std::move(store), {}, {}};
+  const std::size_t n = w.positions.size();
+  Float32Key* keys = w.positions.keys();
   w.to_welded.resize(n);
   {
     // Sized for one class per vertex, as a PLY usually has: the table never grows (growing
     // holds the old and the new table at once).
     detail::WeldTable<Float32Key, detail::Float32KeyTraits> table(n);
-    KeysInPlace classes{keys.data()};
+    KeysInPlace classes{keys};
     // As weld.cpp: hash a few vertices ahead and prefetch their slots.
     constexpr std::size_t ahead = 16;
     std::array<std::uint64_t, 32> ring{};
@@ -197,20 +231,18 @@ std::optional<Float32Weld> weld_float32(std::vector<Float32Key>&& keys) {
       if (!inserted && classes[id] != key) return std::nullopt;
       w.to_welded[i] = id;
     }
-    keys.resize(classes.count);
+    w.positions.resize_down(classes.count);
   }
-  if (keys.size() == n) {
+  if (w.positions.size() == n) {
     std::vector<std::uint32_t>().swap(w.to_welded);  // the identity
   } else {
-    keys.shrink_to_fit();
     // Classes are numbered in order of their first vertex: class `next` first appears where
     // to_welded reaches it.
-    w.representative.reserve(keys.size());
+    w.representative.reserve(w.positions.size());
     for (std::size_t i = 0; i < n; ++i)
       if (w.to_welded[i] == w.representative.size())
         w.representative.push_back(static_cast<std::uint32_t>(i));
   }
-  w.positions = std::move(keys);
   return w;
 }
 
@@ -417,6 +449,7 @@ std::optional<WeldedTriangleProps> ply_triangle_props(std::span<const char> byte
   const std::optional<PlainPly> ply = plain_ply(bytes, h, l);
   if (!ply) return std::nullopt;
 
+  if (release_pages) detail::map_small_pages(bytes.data(), bytes.data() + bytes.size());
   Box3 box;
   auto keys = read_vertices(*ply, release_pages, box);
   if (!keys) return std::nullopt;
@@ -453,9 +486,7 @@ std::optional<WeldedTriangleProps> ply_triangle_props(std::span<const char> byte
 
   // The rest of the report reads positions as doubles and the corners of a few faces (boundary
   // sides, duplicated faces) from the file.
-  std::vector<Vec3d> positions(weld->positions.size());
-  for (std::size_t v = 0; v < positions.size(); ++v) positions[v] = position(weld->positions[v]);
-  std::vector<Float32Key>().swap(weld->positions);
+  const std::span<const Vec3d> positions = weld->positions.to_doubles();
   faces.positions = positions;
   faces.representative = weld->representative;
   faces.corner_lookup = [&](std::uint32_t corner) {
