@@ -17,34 +17,15 @@ namespace pgamesh {
 
 namespace {
 
-using detail::mix64;
 using detail::release_pages;
 
-using Key = std::array<std::uint32_t, 3>;
+using Key = detail::Float32Key;
 
 inline std::uint32_t load_le32(const unsigned char* p) {
   std::uint32_t u;
   std::memcpy(&u, p, 4);
   if constexpr (std::endian::native == std::endian::big) u = __builtin_bswap32(u);
   return u;
-}
-
-// A coordinate's bits with −0 folded to +0 (the bits of −0 are 0x80000000), so that the two zeros
-// weld while every other value welds only with itself.
-inline std::uint32_t folded(std::uint32_t u) {
-  return u == 0x80000000u ? 0u : u;
-}
-
-// The key with every coordinate folded.
-inline Key folded(Key k) {
-  for (std::uint32_t& u : k) u = folded(u);
-  return k;
-}
-
-// Hash of the folded key.
-inline std::uint64_t hash_of(Key k) {
-  k = folded(k);
-  return mix64(((std::uint64_t{k[0]} << 32) | k[1]) ^ mix64(k[2] + 0x9e3779b97f4a7c15ULL));
 }
 
 // Vertex k of the record at r as float32 bits. Returns false for NaN or infinity (all exponent
@@ -59,18 +40,9 @@ inline bool vertex_key(const unsigned char* r, int k, Key& key) {
   return finite;
 }
 
-// Keys keep their own bits (the representative's coordinates, −0 included) and compare folded.
-struct RecordTraits {
-  static std::uint64_t hash(const Key& k) { return hash_of(k); }
-  // Coordinate by coordinate, in registers: comparing folded copies of the arrays made the
-  // compiler store them and reload 8 bytes spanning two 4-byte stores, a store-forwarding stall
-  // on every probe.
-  static bool same(const Key& a, const Key& b) {
-    return folded(a[0]) == folded(b[0]) && folded(a[1]) == folded(b[1]) &&
-           folded(a[2]) == folded(b[2]);
-  }
-};
-using KeyTable = detail::WeldTable<Key, RecordTraits>;
+// The bits of the float32 triples, −0 folded to +0 (weld_table.hpp), as weld_map welds the
+// doubles they become.
+using KeyTable = detail::WeldTable<Key, detail::Float32KeyTraits>;
 
 // The weld of input vertices [first, last) into their own table: corners[i − first] gets the id
 // among this range's classes (numbered by first occurrence), first_vertex[id] the input index of
@@ -98,7 +70,7 @@ void weld_range(const BinaryStlView& view, std::size_t first, std::size_t last,
   auto record = [&](std::size_t i) { return view.records + stl_record_bytes * (i / 3); };
   auto load = [&](std::size_t i) {
     out.finite &= vertex_key(record(i), static_cast<int>(i % 3), ring_key[i & 31]);
-    ring[i & 31] = hash_of(ring_key[i & 31]);
+    ring[i & 31] = detail::Float32KeyTraits::hash(ring_key[i & 31]);
   };
   for (std::size_t i = first; i < std::min(first + ahead, last); ++i) load(i);
   constexpr std::size_t release_step = std::size_t{1} << 22;  // bytes of records per madvise
@@ -132,10 +104,10 @@ void find_in_range(const RangeWeld& low, const std::vector<Key>& keys, std::size
   constexpr std::size_t ahead = 16, key_ahead = 8;
   std::array<std::uint64_t, 32> ring{};
   for (std::size_t j = begin; j < std::min(begin + ahead, end); ++j)
-    ring[j & 31] = hash_of(keys[j]);
+    ring[j & 31] = detail::Float32KeyTraits::hash(keys[j]);
   for (std::size_t j = begin; j < end; ++j) {
     if (j + ahead < end) {
-      ring[(j + ahead) & 31] = hash_of(keys[j + ahead]);
+      ring[(j + ahead) & 31] = detail::Float32KeyTraits::hash(keys[j + ahead]);
       __builtin_prefetch(low.table.slot_address(ring[(j + ahead) & 31]));
     }
     if (j + key_ahead < end) low.table.prefetch_key(ring[(j + key_ahead) & 31], low.keys);

@@ -1,5 +1,6 @@
 // Internal: the open-addressing table behind the exact welds (weld.cpp for meshes of doubles,
-// weld_binary_stl.cpp for float32 STL records), and the hash mixer they share.
+// weld_binary_stl.cpp for float32 STL records, ply_topology.cpp for float32 PLY vertices), and
+// the hash mixer and float32 key they share.
 #pragma once
 
 #include <array>
@@ -132,6 +133,9 @@ struct Float32KeyTraits {
                         z = folded_float32(k[2]);
     return mix64(((std::uint64_t{x} << 32) | y) ^ mix64(z + 0x9e3779b97f4a7c15ULL));
   }
+  // Coordinate by coordinate, in registers: comparing folded copies of the arrays made the
+  // compiler store them and reload 8 bytes spanning two 4-byte stores, a store-forwarding stall
+  // on every probe.
   static bool same(const Float32Key& a, const Float32Key& b) {
     return folded_float32(a[0]) == folded_float32(b[0]) &&
            folded_float32(a[1]) == folded_float32(b[1]) &&
