@@ -1,7 +1,6 @@
 // `pgamesh check`: the JSON of DESIGN.md §5 on golden meshes, the exit codes, and the repaired mesh
 // written by --fix-orientation --output.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cmath>
@@ -12,39 +11,25 @@
 
 #include "pgamesh/mesh/read_mesh.hpp"
 #include "pgamesh/mesh/topology.hpp"
+#include "support/cli_run.hpp"
 #include "support/golden.hpp"
 
 namespace pgamesh {
 namespace {
 
+using test::CliRun;
 using test::json;
 using test::parse_json;
-
-struct CliRun {
-  int status = -1;
-  std::string out, err;
-};
+using test::run_cli;
 
 // Temporary files carry the process id: ctest runs the cases of this file in parallel processes.
 std::filesystem::path temp_path(const std::string& name) {
   return std::filesystem::temp_directory_path() / (std::to_string(::getpid()) + "_" + name);
 }
 
-CliRun run_cli(const std::string& args) {
-  const std::string out = temp_path("pgamesh_check_cli.out").string();
-  const std::string err = temp_path("pgamesh_check_cli.err").string();
-  const std::string cmd =
-      std::string("'") + PGAMESH_CLI_PATH + "' check " + args + " >" + out + " 2>" + err;
-  CliRun r;
-  const int raw = std::system(cmd.c_str());
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  auto slurp = [](const std::string& p) {
-    std::ifstream in(p);
-    return std::string(std::istreambuf_iterator<char>(in), {});
-  };
-  r.out = slurp(out);
-  r.err = slurp(err);
-  return r;
+// Runs `pgamesh check ARGS`.
+CliRun run_check(const std::string& args) {
+  return run_cli("check " + args);
 }
 
 std::string temp_file(const std::string& name, const std::string& content) {
@@ -59,7 +44,7 @@ const char* open_cube_obj =
     "f 1 3 4\nf 1 4 2\nf 1 2 6\nf 1 6 5\nf 3 7 8\nf 3 8 4\nf 1 5 7\nf 1 7 3\nf 2 4 8\nf 2 8 6\n";
 
 TEST(CheckCli, JsonOfAClosedGoldenMesh) {
-  const CliRun r = run_cli(std::string("'") + PGAMESH_GOLDEN_DIR + "/meshes/torus.obj' --json");
+  const CliRun r = run_check(std::string("'") + PGAMESH_GOLDEN_DIR + "/meshes/torus.obj' --json");
   ASSERT_EQ(r.status, 0) << r.err;
   const json j = parse_json(r.out);
   const json golden = test::load_golden("mesh_props.json");
@@ -85,7 +70,7 @@ TEST(CheckCli, JsonOfAClosedGoldenMesh) {
 
 TEST(CheckCli, JsonOfAnOpenMeshListsItsLoop) {
   const std::string path = temp_file("pgamesh_open_cube.obj", open_cube_obj);
-  const CliRun r = run_cli("'" + path + "' --json");
+  const CliRun r = run_check("'" + path + "' --json");
   ASSERT_EQ(r.status, 0) << r.err;  // an open mesh is a result, not an error
   const json j = parse_json(r.out);
   EXPECT_EQ(j["closed"], false);
@@ -104,7 +89,7 @@ TEST(CheckCli, JsonOfAnOpenMeshListsItsLoop) {
   ASSERT_GE(j["notes"].size(), 1u);
   EXPECT_NE(j["notes"][0].get<std::string>().find("not meaningful"), std::string::npos);
   // The readable report says the same in words.
-  const CliRun text = run_cli("'" + path + "'");
+  const CliRun text = run_check("'" + path + "'");
   EXPECT_EQ(text.status, 0);
   EXPECT_NE(text.out.find("NOT MEANINGFUL"), std::string::npos);
   EXPECT_NE(text.out.find("boundary loops      1"), std::string::npos);
@@ -119,7 +104,7 @@ TEST(CheckCli, FixOrientationWritesTheRepairedMesh) {
                 "f 1 7 3\nf 2 4 8\nf 2 8 6\n");
   const std::string out = temp_path("pgamesh_fixed_cube.obj").string();
   std::filesystem::remove(out);
-  const CliRun r = run_cli("'" + in + "' --fix-orientation --output '" + out + "' --json");
+  const CliRun r = run_check("'" + in + "' --fix-orientation --output '" + out + "' --json");
   ASSERT_EQ(r.status, 0) << r.err;
   const json j = parse_json(r.out);
   EXPECT_EQ(j["orientation_fix"]["flipped_faces"], 2);
@@ -133,22 +118,22 @@ TEST(CheckCli, FixOrientationWritesTheRepairedMesh) {
 
 TEST(CheckCli, UnreadableInputFailsWithTheReadersError) {
   const std::string bad = temp_file("pgamesh_bad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n");
-  const CliRun r = run_cli("'" + bad + "' --json");
+  const CliRun r = run_check("'" + bad + "' --json");
   EXPECT_NE(r.status, 0);
   EXPECT_TRUE(r.out.empty());
   EXPECT_NE(r.err.find(bad + ":4"), std::string::npos) << r.err;
-  const CliRun missing = run_cli("/nonexistent/mesh.stl");
+  const CliRun missing = run_check("/nonexistent/mesh.stl");
   EXPECT_NE(missing.status, 0);
   EXPECT_NE(missing.err.find("/nonexistent/mesh.stl"), std::string::npos) << missing.err;
 }
 
 TEST(CheckCli, BadOptionsExitTwo) {
   const std::string path = temp_file("pgamesh_open_cube.obj", open_cube_obj);
-  EXPECT_EQ(run_cli("'" + path + "' --weld-tolerance -1").status, 2);
-  EXPECT_EQ(run_cli("'" + path + "' --weld-tolerance abc").status, 2);
-  EXPECT_EQ(run_cli("'" + path + "' --output x.obj").status, 2);  // needs --fix-orientation
-  EXPECT_EQ(run_cli("'" + path + "' --bogus").status, 2);
-  EXPECT_EQ(run_cli("").status, 2);
+  EXPECT_EQ(run_check("'" + path + "' --weld-tolerance -1").status, 2);
+  EXPECT_EQ(run_check("'" + path + "' --weld-tolerance abc").status, 2);
+  EXPECT_EQ(run_check("'" + path + "' --output x.obj").status, 2);  // needs --fix-orientation
+  EXPECT_EQ(run_check("'" + path + "' --bogus").status, 2);
+  EXPECT_EQ(run_check("").status, 2);
 }
 
 TEST(CheckCli, WeldToleranceIsReported) {
@@ -156,10 +141,10 @@ TEST(CheckCli, WeldToleranceIsReported) {
   const std::string path = temp_file(
       "pgamesh_seam.obj",
       "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1.000000001 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 4 6 5\n");
-  const json exact = parse_json(run_cli("'" + path + "' --json").out);
+  const json exact = parse_json(run_check("'" + path + "' --json").out);
   EXPECT_EQ(exact["boundary_edges"], 6);
   EXPECT_EQ(exact["components"], 2);
-  const json welded = parse_json(run_cli("'" + path + "' --json --weld-tolerance 1e-6").out);
+  const json welded = parse_json(run_check("'" + path + "' --json --weld-tolerance 1e-6").out);
   EXPECT_EQ(welded["boundary_edges"], 4);
   EXPECT_EQ(welded["components"], 1);
   EXPECT_EQ(welded["weld"]["merged_vertices"], 2);

@@ -1,7 +1,6 @@
 // `pgamesh fuel` end to end: golden values through --json and --csv, the attitude convention,
 // and the errors (open mesh, zero up vector, levels outside the tank, volumes too large).
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cmath>
@@ -12,37 +11,19 @@
 #include <sstream>
 #include <string>
 
+#include "support/cli_run.hpp"
 #include "support/golden.hpp"
 
+using pgamesh::test::CliRun;
 using pgamesh::test::json;
 using pgamesh::test::parse_json;
+using pgamesh::test::run_cli;
 
 namespace {
 
-struct CliRun {
-  int status = -1;
-  std::string out, err;
-};
-
-CliRun run_cli(const std::string& args) {
-  const auto err_path = std::filesystem::temp_directory_path() /
-                        ("pgamesh_fuel_cli_" + std::to_string(::getpid()) + ".err");
-  const std::string cmd =
-      std::string(PGAMESH_CLI_PATH) + " fuel " + args + " 2>" + err_path.string();
-  CliRun r;
-  std::FILE* p = ::popen(cmd.c_str(), "r");
-  if (!p) return r;
-  char buf[4096];
-  std::size_t n;
-  while ((n = std::fread(buf, 1, sizeof buf, p)) > 0) r.out.append(buf, n);
-  const int st = ::pclose(p);
-  r.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-  std::ifstream e(err_path);
-  std::stringstream ss;
-  ss << e.rdbuf();
-  r.err = ss.str();
-  std::filesystem::remove(err_path);
-  return r;
+// Runs `pgamesh fuel ARGS`.
+CliRun run_fuel(const std::string& args) {
+  return run_cli("fuel " + args);
 }
 
 std::string golden_mesh(const std::string& name) {
@@ -77,8 +58,8 @@ TEST(FuelCli, LevelJsonMatchesGolden) {
     const json& c = golden_case(file, id);
     const std::string mesh =
         std::string(PGAMESH_GOLDEN_DIR) + "/" + c["input"]["mesh"].get<std::string>();
-    const CliRun r = run_cli(mesh + " --up " + vec_arg(c["input"]["up"]) + " --level " +
-                             num_arg(c["input"]["level"].get<double>()) + " --json");
+    const CliRun r = run_fuel(mesh + " --up " + vec_arg(c["input"]["up"]) + " --level " +
+                              num_arg(c["input"]["level"].get<double>()) + " --json");
     ASSERT_EQ(r.status, 0) << r.err;
     const json out = parse_json(r.out);
     const json& e = c["expected"];
@@ -100,17 +81,17 @@ TEST(FuelCli, VolumeAndFractionSolveForTheLevel) {
   const json file = pgamesh::test::load_golden("fuel_slices.json");
   const json& c = golden_case(file, "inverse_icosphere_L4_1litre");
   const std::string mesh = golden_mesh("icosphere_L4.obj");
-  CliRun r = run_cli(mesh + " --up " + vec_arg(c["input"]["up"]) + " --volume 1 --json");
+  CliRun r = run_fuel(mesh + " --up " + vec_arg(c["input"]["up"]) + " --volume 1 --json");
   ASSERT_EQ(r.status, 0) << r.err;
   json out = parse_json(r.out);
   EXPECT_NEAR(out["level"].get<double>(), c["expected"]["level"].get<double>(), 1e-10);
   EXPECT_NEAR(out["volume"].get<double>(), 1.0, 1e-12);
-  r = run_cli(golden_mesh("cube_tilted.obj") + " --fraction 0.5 --json");
+  r = run_fuel(golden_mesh("cube_tilted.obj") + " --fraction 0.5 --json");
   ASSERT_EQ(r.status, 0) << r.err;
   out = parse_json(r.out);
   EXPECT_NEAR(out["level"].get<double>(), 1.4475067636685255, 1e-10);
   // A list of volumes.
-  r = run_cli(golden_mesh("unit_cube.obj") + " --volumes 0.25,0.5,1 --json");
+  r = run_fuel(golden_mesh("unit_cube.obj") + " --volumes 0.25,0.5,1 --json");
   ASSERT_EQ(r.status, 0) << r.err;
   out = parse_json(r.out);
   ASSERT_EQ(out["rows"].size(), 3u);
@@ -121,7 +102,7 @@ TEST(FuelCli, VolumeAndFractionSolveForTheLevel) {
 TEST(FuelCli, GaugeTableCsvMatchesGolden) {
   const json file = pgamesh::test::load_golden("fuel_slices.json");
   const json& c = golden_case(file, "gauge_cube_tilted");
-  const CliRun r = run_cli(golden_mesh("cube_tilted.obj") + " --up 0,0,1 --table 10 --csv");
+  const CliRun r = run_fuel(golden_mesh("cube_tilted.obj") + " --up 0,0,1 --table 10 --csv");
   ASSERT_EQ(r.status, 0) << r.err;
   std::istringstream in(r.out);
   std::string line;
@@ -154,7 +135,7 @@ TEST(FuelCli, GaugeTableCsvMatchesGolden) {
 TEST(FuelCli, AttitudeGridAndAcceleration) {
   const std::string mesh = std::string(PGAMESH_BUNDLED_MESHES_DIR) + "/tank.obj";
   if (!std::filesystem::exists(mesh)) GTEST_SKIP() << "no bundled tank.obj";
-  CliRun r = run_cli(mesh + " --pitch 10 --roll -5 --fraction 0.5 --json");
+  CliRun r = run_fuel(mesh + " --pitch 10 --roll -5 --fraction 0.5 --json");
   ASSERT_EQ(r.status, 0) << r.err;
   json out = parse_json(r.out);
   const double p = 10 * std::numbers::pi / 180, f = -5 * std::numbers::pi / 180;
@@ -162,13 +143,13 @@ TEST(FuelCli, AttitudeGridAndAcceleration) {
   EXPECT_NEAR(out["up"][1].get<double>(), std::sin(f) * std::cos(p), 1e-15);
   EXPECT_NEAR(out["up"][2].get<double>(), std::cos(f) * std::cos(p), 1e-15);
   EXPECT_NEAR(out["fraction"].get<double>(), 0.5, 1e-12);
-  r = run_cli(mesh + " --pitch 0,5 --roll 0,2,4 --table 4 --json");
+  r = run_fuel(mesh + " --pitch 0,5 --roll 0,2,4 --table 4 --json");
   ASSERT_EQ(r.status, 0) << r.err;
   out = parse_json(r.out);
   ASSERT_EQ(out["attitudes"].size(), 6u);
   EXPECT_EQ(out["attitudes"][5]["rows"].size(), 5u);
   EXPECT_EQ(out["attitudes"][5]["roll_deg"].get<double>(), 4);
-  r = run_cli(mesh + " --accel 0,0,-9.81 --level 0.3 --json");
+  r = run_fuel(mesh + " --accel 0,0,-9.81 --level 0.3 --json");
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(parse_json(r.out)["up"][2].get<double>(), 1);
 }
@@ -184,40 +165,40 @@ TEST(FuelCli, Errors) {
     while (std::getline(in, line))
       if (line != "f 5 6 8" && line != "f 5 8 7") out << line << "\n";
   }
-  CliRun r = run_cli(open_path.string() + " --level 0.5 --json");
+  CliRun r = run_fuel(open_path.string() + " --level 0.5 --json");
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.err.find("open"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("gap area 1"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find(open_path.string()), std::string::npos) << r.err;
-  r = run_cli(open_path.string() + " --level 0.5 --json --force");
+  r = run_fuel(open_path.string() + " --level 0.5 --json --force");
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.err.find("warning"), std::string::npos);
   std::filesystem::remove(open_path);
 
   const std::string cube = golden_mesh("unit_cube.obj");
-  r = run_cli(cube + " --up 0,0,0 --level 0.5");
+  r = run_fuel(cube + " --up 0,0,0 --level 0.5");
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.err.find("up vector must not be zero"), std::string::npos) << r.err;
-  r = run_cli(cube + " --up 0,nan,1 --level 0.5");
+  r = run_fuel(cube + " --up 0,nan,1 --level 0.5");
   EXPECT_EQ(r.status, 2);
-  r = run_cli(cube + " --level -0.5");
+  r = run_fuel(cube + " --level -0.5");
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.err.find("below"), std::string::npos);
   EXPECT_NE(r.err.find("empty"), std::string::npos) << r.err;
-  r = run_cli(cube + " --level 1.5");
+  r = run_fuel(cube + " --level 1.5");
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.err.find("full"), std::string::npos) << r.err;
-  r = run_cli(cube + " --volume 2");
+  r = run_fuel(cube + " --volume 2");
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.err.find("exceeds the tank's volume 1"), std::string::npos) << r.err;
-  r = run_cli(cube + " --volume -1");
+  r = run_fuel(cube + " --volume -1");
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.err.find("negative"), std::string::npos) << r.err;
-  r = run_cli(cube + " --table 0");
+  r = run_fuel(cube + " --table 0");
   EXPECT_EQ(r.status, 2);
-  r = run_cli(cube);
+  r = run_fuel(cube);
   EXPECT_EQ(r.status, 2);
-  r = run_cli("/nonexistent/tank.obj --level 0");
+  r = run_fuel("/nonexistent/tank.obj --level 0");
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.err.find("/nonexistent/tank.obj"), std::string::npos) << r.err;
 }
@@ -233,12 +214,12 @@ TEST(FuelCli, TopologyFromTheSharedReportRefusesInconsistentMeshes) {
     std::string line;
     while (std::getline(in, line)) out << (line == "f 5 6 8" ? "f 5 8 6" : line) << "\n";
   }
-  CliRun r = run_cli(path.string() + " --level 0.5 --json");
+  CliRun r = run_fuel(path.string() + " --level 0.5 --json");
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.err.find("orientation INCONSISTENT"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("orientation inconsistent: 3 edges"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("--force"), std::string::npos) << r.err;
-  r = run_cli(path.string() + " --level 0.5 --json --force");
+  r = run_fuel(path.string() + " --level 0.5 --json --force");
   ASSERT_EQ(r.status, 0) << r.err;
   json out = parse_json(r.out);
   EXPECT_TRUE(out["forced"].get<bool>());
@@ -247,7 +228,7 @@ TEST(FuelCli, TopologyFromTheSharedReportRefusesInconsistentMeshes) {
   std::filesystem::remove(path);
 
   // A good tank says so.
-  r = run_cli(golden_mesh("unit_cube.obj") + " --level 0.5 --json");
+  r = run_fuel(golden_mesh("unit_cube.obj") + " --level 0.5 --json");
   ASSERT_EQ(r.status, 0) << r.err;
   out = parse_json(r.out);
   EXPECT_FALSE(out["forced"].get<bool>());
@@ -261,7 +242,7 @@ TEST(FuelCli, DensityAndMassScaleMassAndInertia) {
   // centre of mass, I_zz = ρ V (1 + 1)/12.
   const std::string cube = golden_mesh("unit_cube.obj");
   for (const std::string& option : {std::string("--density 800"), std::string("--mass 800")}) {
-    CliRun r = run_cli(cube + " --level 0.5 --json " + option);
+    CliRun r = run_fuel(cube + " --level 0.5 --json " + option);
     ASSERT_EQ(r.status, 0) << r.err;
     const json out = parse_json(r.out);
     EXPECT_NEAR(out["density"].get<double>(), 800, 1e-12);
@@ -271,7 +252,7 @@ TEST(FuelCli, DensityAndMassScaleMassAndInertia) {
     EXPECT_NEAR(out["inertia_com"][2][2].get<double>(), 400 * 2.0 / 12, 1e-10);
     EXPECT_NEAR(out["inertia_com"][0][1].get<double>(), 0, 1e-10);
   }
-  CliRun r = run_cli(cube + " --table 2 --csv --density 2.5");
+  CliRun r = run_fuel(cube + " --table 2 --csv --density 2.5");
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("# density 2.5\n"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("ullage_volume,mass\n"), std::string::npos) << r.out;
@@ -283,7 +264,7 @@ TEST(FuelCli, DensityAndMassScaleMassAndInertia) {
     if (!line.empty() && line[0] != '#' && line[0] != 'l') rows.push_back(line);
   ASSERT_EQ(rows.size(), 3u);
   EXPECT_NEAR(std::stod(rows[1].substr(rows[1].rfind(',') + 1)), 1.25, 1e-12);
-  r = run_cli(cube + " --level 0.5 --density 1 --mass 2");
+  r = run_fuel(cube + " --level 0.5 --density 1 --mass 2");
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("not both"), std::string::npos) << r.err;
 }

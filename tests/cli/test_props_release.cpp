@@ -4,8 +4,6 @@
 // same report, field for field, and the same errors — on files of several MiB, so that pages are
 // released before the data that decides the figures.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -16,53 +14,23 @@
 #include "pgamesh/mesh/mesh_format.hpp"
 #include "pgamesh/mesh/read_mesh.hpp"
 #include "pgamesh/mesh/write_mesh.hpp"
+#include "support/cli_run.hpp"
 #include "support/golden.hpp"
 #include "support/solids.hpp"
 
+using pgamesh::test::CliRun;
 using pgamesh::test::json;
 using pgamesh::test::parse_json;
+using pgamesh::test::run_cli;
+using pgamesh::test::test_temp_path;
 
 namespace {
-
-struct CliRun {
-  int status = -1;
-  std::string out, err;
-};
-
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
-
-std::string temp_path(const std::string& what) {
-  return (std::filesystem::temp_directory_path() /
-          (std::string("pgamesh_release_") +
-           ::testing::UnitTest::GetInstance()->current_test_info()->name() + "_" +
-           std::to_string(::getpid()) + what))
-      .string();
-}
-
-// Runs `pgamesh ARGS` (with `input` on standard input when given).
-CliRun run_cli(const std::string& args, const std::string& input = "") {
-  const std::string out = temp_path(".out"), err = temp_path(".err");
-  std::string cmd = std::string("\"") + PGAMESH_CLI_PATH + "\" " + args;
-  if (!input.empty()) cmd += " < \"" + input + "\"";
-  cmd += " > \"" + out + "\" 2> \"" + err + "\"";
-  CliRun r;
-  const int raw = std::system(cmd.c_str());
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  r.out = slurp(out);
-  r.err = slurp(err);
-  std::filesystem::remove(out);
-  std::filesystem::remove(err);
-  return r;
-}
 
 // The report of the mapped file and of the same bytes through a pipe, with `flags`: equal but for
 // the file name.
 void expect_same_props(const std::string& bytes, const std::string& flags) {
   SCOPED_TRACE(flags);
-  const std::string path = temp_path(".mesh");
+  const std::string path = test_temp_path(".mesh");
   std::ofstream(path, std::ios::binary) << bytes;
   const CliRun mapped = run_cli("props \"" + path + "\" --json " + flags);
   const CliRun piped = run_cli("props - --json " + flags, path);
@@ -139,7 +107,7 @@ TEST(PropsRelease, PolygonsNegativeIndicesAndUnweldedTriangles) {
 TEST(PropsRelease, ErrorsKeepTheirPositions) {
   const std::string obj = pgamesh::write_mesh_bytes(big_triangles(), pgamesh::MeshFormat::obj);
   const std::string bad = obj + "f 1 2 0\n";
-  const std::string path = temp_path(".obj");
+  const std::string path = test_temp_path(".obj");
   std::ofstream(path, std::ios::binary) << bad;
   for (const char* flags : {"", "--no-topology"}) {
     const CliRun mapped = run_cli(std::string("props \"") + path + "\" " + flags);
@@ -165,7 +133,7 @@ TEST(PropsRelease, ErrorsKeepTheirPositions) {
 TEST(PropsRelease, PlyWithoutAFaceListReportsAsTheMeshPath) {
   const pgamesh::Mesh mesh = pgamesh::test::uv_sphere(1.5, 200, 400);  // quads and triangles
   auto report = [](const std::string& bytes, const std::string& what) {
-    const std::string path = temp_path(what);
+    const std::string path = test_temp_path(what);
     std::ofstream(path, std::ios::binary) << bytes;
     const CliRun r = run_cli("props \"" + path + "\" --json --no-topology");
     std::filesystem::remove(path);
@@ -186,7 +154,7 @@ TEST(PropsRelease, PlyWithoutAFaceListReportsAsTheMeshPath) {
   // A vertex index out of range in the last face, after pages already given back.
   std::string bad = pgamesh::write_mesh_bytes(mesh, pgamesh::MeshFormat::ply_binary_le);
   bad[bad.size() - 2] = 0x7f;  // the last index's high byte
-  const std::string path = temp_path(".ply");
+  const std::string path = test_temp_path(".ply");
   std::ofstream(path, std::ios::binary) << bad;
   std::string expected_error;
   try {

@@ -1,7 +1,6 @@
 // `pgamesh props` end to end: runs the built CLI (PGAMESH_CLI_PATH) on golden and real meshes,
 // parses its JSON and checks it against golden/mesh_props.json; URDF/MJCF output; errors.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -12,47 +11,20 @@
 #include <string>
 
 #include "pgamesh/mesh/write_mesh.hpp"
+#include "support/cli_run.hpp"
 #include "support/golden.hpp"
 #include "support/solids.hpp"
 #include "support/stl_bytes.hpp"
 
+using pgamesh::test::CliRun;
 using pgamesh::test::flatten;
 using pgamesh::test::json;
 using pgamesh::test::near_group;
 using pgamesh::test::near_scalar;
 using pgamesh::test::parse_json;
+using pgamesh::test::run_cli;
 
 namespace {
-
-struct CliRun {
-  int status = -1;
-  std::string out, err;
-};
-
-// Runs `pgamesh ARGS` with stdout and stderr captured in files named after the running test (ctest
-// runs the cases of this file in parallel).
-CliRun run_cli(const std::string& args) {
-  const auto dir = std::filesystem::temp_directory_path();
-  const std::string stem = std::string("pgamesh_props_") +
-                           ::testing::UnitTest::GetInstance()->current_test_info()->name() + "_" +
-                           std::to_string(::getpid());
-  const std::string out = (dir / (stem + ".out")).string();
-  const std::string err = (dir / (stem + ".err")).string();
-  const std::string cmd =
-      std::string("\"") + PGAMESH_CLI_PATH + "\" " + args + " > \"" + out + "\" 2> \"" + err + "\"";
-  CliRun r;
-  const int raw = std::system(cmd.c_str());
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  const auto slurp = [](const std::string& path) {
-    std::ifstream in(path);
-    return std::string(std::istreambuf_iterator<char>(in), {});
-  };
-  r.out = slurp(out);
-  r.err = slurp(err);
-  std::filesystem::remove(out);
-  std::filesystem::remove(err);
-  return r;
-}
 
 std::string golden_mesh(const std::string& name) {
   return std::string(PGAMESH_GOLDEN_DIR) + "/meshes/" + name;

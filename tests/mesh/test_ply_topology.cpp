@@ -3,8 +3,6 @@
 // meshes with each defect, real meshes, one pass and many, little- and big-endian; and the files
 // it declines, whose errors the CLI then reports as before.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <cstdint>
 #include <cstdlib>
@@ -22,6 +20,7 @@
 #include "pgamesh/mesh/topology.hpp"
 #include "pgamesh/mesh/welded_triangles.hpp"
 #include "pgamesh/mesh/write_mesh.hpp"
+#include "support/cli_run.hpp"
 #include "support/read_helpers.hpp"
 #include "support/same_topology.hpp"
 #include "support/solids.hpp"
@@ -30,30 +29,11 @@
 namespace pgamesh {
 namespace {
 
+using test::CliRun;
+using test::expect_same_mass;
 using test::expect_same_report;
-
-void expect_same_mass(const MassProperties& a, const MassProperties& b) {
-  EXPECT_EQ(a.faces, b.faces);
-  EXPECT_EQ(a.triangles, b.triangles);
-  EXPECT_EQ(a.vertices, b.vertices);
-  EXPECT_SAME_VEC(a.reference_point, b.reference_point);
-  EXPECT_SAME_VEC(a.center_of_mass, b.center_of_mass);
-  for (int k = 0; k < 3; ++k) {
-    EXPECT_SAME(a.principal.moments[k], b.principal.moments[k]);
-    for (int j = 0; j < 3; ++j) {
-      EXPECT_SAME(a.inertia_com[k][j], b.inertia_com[k][j]);
-      EXPECT_SAME(a.inertia_origin[k][j], b.inertia_origin[k][j]);
-    }
-  }
-  EXPECT_SAME(a.area, b.area);
-  EXPECT_SAME(a.volume, b.volume);
-  EXPECT_SAME(a.mass, b.mass);
-  EXPECT_SAME(a.density, b.density);
-  EXPECT_SAME(a.gap_area, b.gap_area);
-  EXPECT_SAME(a.carrier_sum.e0, b.carrier_sum.e0);
-  EXPECT_SAME_VEC(a.carrier_sum.normal(), b.carrier_sum.normal());
-  EXPECT_EQ(a.warnings, b.warnings);
-}
+using test::run_cli;
+using test::test_temp_path;
 
 std::string ply_bytes(const Mesh& m, MeshFormat format = MeshFormat::ply_binary_le) {
   WriteOptions o;
@@ -283,31 +263,12 @@ TEST(PlyTopology, Declines) {
   EXPECT_FALSE(ply_triangle_props({cube.data(), cube.size()}, "mem.ply", source, {}, tolerant));
 }
 
-struct CliRun {
-  int status = -1;
-  std::string out, err;
-};
-
+// Runs `pgamesh props` on `bytes` written to a PLY file.
 CliRun run_props(const std::string& bytes) {
-  const auto dir = std::filesystem::temp_directory_path();
-  const std::string stem = std::string("pgamesh_plytopo_") +
-                           ::testing::UnitTest::GetInstance()->current_test_info()->name() + "_" +
-                           std::to_string(::getpid());
-  const std::string ply = (dir / (stem + ".ply")).string();
-  const std::string out = (dir / (stem + ".out")).string(), err = (dir / (stem + ".err")).string();
+  const std::string ply = test_temp_path(".ply");
   std::ofstream(ply, std::ios::binary) << bytes;
-  const std::string cmd = std::string("\"") + PGAMESH_CLI_PATH + "\" props \"" + ply + "\" > \"" +
-                          out + "\" 2> \"" + err + "\"";
-  CliRun r;
-  const int raw = std::system(cmd.c_str());
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  const auto slurp = [](const std::string& path) {
-    std::ifstream in(path);
-    return std::string(std::istreambuf_iterator<char>(in), {});
-  };
-  r.out = slurp(out);
-  r.err = slurp(err);
-  for (const std::string& p : {ply, out, err}) std::filesystem::remove(p);
+  CliRun r = run_cli("props \"" + ply + "\"");
+  std::filesystem::remove(ply);
   return r;
 }
 

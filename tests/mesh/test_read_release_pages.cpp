@@ -18,10 +18,13 @@
 #include "pgamesh/mesh/stl_binary.hpp"
 #include "pgamesh/mesh/stl_mass_properties.hpp"
 #include "pgamesh/mesh/write_mesh.hpp"
+#include "support/same_topology.hpp"
 #include "support/solids.hpp"
 
 namespace pgamesh {
 namespace {
+
+using test::expect_same_mass;
 
 // A file in the temporary folder, removed at the end of the test.
 struct TempFile {
@@ -160,36 +163,6 @@ TEST(ReadReleasePages, StlAsciiAndOffReadAsFromMemory) {
   expect_same_error("release_off_bad", off.substr(0, off.find_last_of(' ')) + " 99999999\n");
   const std::string bin = write_mesh_bytes(tri, MeshFormat::stl_binary);
   expect_same_reading("release_stl_binary", bin);
-}
-
-// Mass properties compared bit for bit.
-void expect_same_mass(const MassProperties& a, const MassProperties& b) {
-  const double x[] = {a.area,
-                      a.volume,
-                      a.gap_area,
-                      a.mass,
-                      a.center_of_mass.x,
-                      a.center_of_mass.y,
-                      a.center_of_mass.z,
-                      a.inertia_com[0][0],
-                      a.inertia_com[0][1],
-                      a.inertia_com[1][2],
-                      a.inertia_com[2][2]};
-  const double y[] = {b.area,
-                      b.volume,
-                      b.gap_area,
-                      b.mass,
-                      b.center_of_mass.x,
-                      b.center_of_mass.y,
-                      b.center_of_mass.z,
-                      b.inertia_com[0][0],
-                      b.inertia_com[0][1],
-                      b.inertia_com[1][2],
-                      b.inertia_com[2][2]};
-  EXPECT_EQ(std::memcmp(x, y, sizeof x), 0);
-  EXPECT_EQ(a.faces, b.faces);
-  EXPECT_EQ(a.vertices, b.vertices);
-  EXPECT_EQ(a.warnings, b.warnings);
 }
 
 TEST(ReadReleasePages, StreamedStlPassesReleaseAndSumTheSame) {

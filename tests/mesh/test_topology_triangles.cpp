@@ -149,19 +149,7 @@ void expect_one_pass_agrees(const Mesh& m) {
   expect_same_report(both.topology, analyze_welded_triangles(w, ref, small_lists));
   const MassProperties apart = mass_properties(w, ref, mass_options, true);
   const MassProperties& one = both.mass;
-  EXPECT_SAME(one.volume, apart.volume);
-  EXPECT_SAME(one.area, apart.area);
-  EXPECT_SAME(one.mass, apart.mass);
-  EXPECT_SAME_VEC(one.center_of_mass, apart.center_of_mass);
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) {
-      EXPECT_SAME(one.inertia_com[i][j], apart.inertia_com[i][j]);
-      EXPECT_SAME(one.inertia_origin[i][j], apart.inertia_origin[i][j]);
-    }
-  EXPECT_EQ(one.faces, apart.faces);
-  EXPECT_EQ(one.triangles, apart.triangles);
-  EXPECT_EQ(one.vertices, apart.vertices);
-  EXPECT_EQ(one.warnings, apart.warnings);
+  test::expect_same_mass(one, apart);
 }
 
 TEST(TopologyTriangles, MassAndTopologyInOnePassMatchTheSeparatePasses) {
@@ -230,14 +218,7 @@ TEST(TopologyTriangles, StlRecordWeldMatchesTheReadMesh) {
   expect_same_report(analyze_welded_triangles(from_records, ref), analyze_topology(read));
   const MassProperties a = mass_properties(from_records, ref, {}, true);
   const MassProperties b = mass_properties(read, {}, &source);
-  EXPECT_SAME(a.volume, b.volume);
-  EXPECT_SAME(a.area, b.area);
-  EXPECT_SAME_VEC(a.center_of_mass, b.center_of_mass);
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) EXPECT_SAME(a.inertia_com[i][j], b.inertia_com[i][j]);
-  EXPECT_EQ(a.faces, b.faces);
-  EXPECT_EQ(a.vertices, b.vertices);
-  EXPECT_EQ(a.warnings, b.warnings);
+  test::expect_same_mass(a, b);
 }
 
 TEST(TopologyTriangles, StlNonFiniteCoordinateIsNamedLikeTheReader) {

@@ -89,4 +89,27 @@ void expect_same_report(const TopologyReport& a, const TopologyReport& b) {
   EXPECT_EQ(a.notes, b.notes);
 }
 
+void expect_same_mass(const MassProperties& a, const MassProperties& b) {
+  EXPECT_EQ(a.faces, b.faces);
+  EXPECT_EQ(a.triangles, b.triangles);
+  EXPECT_EQ(a.vertices, b.vertices);
+  EXPECT_SAME_VEC(a.reference_point, b.reference_point);
+  EXPECT_SAME_VEC(a.center_of_mass, b.center_of_mass);
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_SAME(a.principal.moments[k], b.principal.moments[k]);
+    for (int j = 0; j < 3; ++j) {
+      EXPECT_SAME(a.inertia_com[k][j], b.inertia_com[k][j]);
+      EXPECT_SAME(a.inertia_origin[k][j], b.inertia_origin[k][j]);
+    }
+  }
+  EXPECT_SAME(a.area, b.area);
+  EXPECT_SAME(a.volume, b.volume);
+  EXPECT_SAME(a.mass, b.mass);
+  EXPECT_SAME(a.density, b.density);
+  EXPECT_SAME(a.gap_area, b.gap_area);
+  EXPECT_SAME(a.carrier_sum.e0, b.carrier_sum.e0);
+  EXPECT_SAME_VEC(a.carrier_sum.normal(), b.carrier_sum.normal());
+  EXPECT_EQ(a.warnings, b.warnings);
+}
+
 }  // namespace pgamesh::test

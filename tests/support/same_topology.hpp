@@ -1,5 +1,6 @@
-// Comparisons for tests that run two routes to one topology report (the triangle pass against the
-// polygon pass, a moved mesh against a copied one): every field, doubles bit for bit.
+// Comparisons for tests that run two routes to one topology report or one set of mass properties
+// (the triangle pass against the polygon pass, a moved mesh against a copied one, a streamed file
+// against the read mesh): every field, doubles bit for bit.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -7,6 +8,7 @@
 #include <cstring>
 #include <vector>
 
+#include "pgamesh/mesh/mass_properties.hpp"
 #include "pgamesh/mesh/topology.hpp"
 
 namespace pgamesh::test {
@@ -33,5 +35,8 @@ void expect_same_edges(const std::vector<EdgeLocation>& a, const std::vector<Edg
 
 // Every field of two reports, doubles bit for bit.
 void expect_same_report(const TopologyReport& a, const TopologyReport& b);
+
+// Every figure of two mass property results, doubles bit for bit, with their counts and warnings.
+void expect_same_mass(const MassProperties& a, const MassProperties& b);
 
 }  // namespace pgamesh::test
