@@ -13,6 +13,7 @@
 #include <limits>
 #include <memory>
 #include <new>
+#include <numeric>
 #include <optional>
 #include <span>
 #include <utility>
@@ -33,7 +34,7 @@ namespace pgamesh {
 
 namespace {
 
-using detail::Float32Key;
+using detail::CoordinateKey;
 using detail::PlyType;
 
 // Bytes between the releases of the pages a pass has read: small, as the file's pages in flight
@@ -50,6 +51,7 @@ struct PlainPly {
   std::size_t face_stride = 0;  // of a record whose index list holds three indices
   std::size_t count_offset = 0, index_offset = 0, index_size = 0;
   PlyType count_type = PlyType::none, index_type = PlyType::none;
+  PlyType coordinate_type = PlyType::none;  // f32 or f64, the same for x, y and z
   bool swap = false;
 
   const unsigned char* face(std::size_t f) const { return faces + f * face_stride; }
@@ -62,9 +64,10 @@ struct PlainPly {
   std::int64_t index(const unsigned char* r, std::size_t k) const {
     return detail::load_as<std::int64_t>(r + index_offset + k * index_size, index_type, swap);
   }
-  // Coordinate k of vertex i as float32 bits.
-  std::uint32_t coordinate_bits(std::size_t i, int k) const {
-    return detail::load_raw<std::uint32_t>(vertices + i * vertex_stride + coord_offset[k], swap);
+  // Coordinate k of vertex i as the bits of its type (Bits of coordinate_type's size).
+  template <class Bits>
+  Bits coordinate_bits(std::size_t i, int k) const {
+    return detail::load_raw<Bits>(vertices + i * vertex_stride + coord_offset[k], swap);
   }
 };
 
@@ -87,7 +90,10 @@ std::optional<PlainPly> plain_ply(std::span<const char> bytes, const detail::Hea
     if (prop.is_list()) return std::nullopt;
     for (int k = 0; k < 3; ++k)
       if (static_cast<int>(i) == l.coord[k]) {
-        if (prop.type != PlyType::f32) return std::nullopt;
+        if (prop.type != PlyType::f32 && prop.type != PlyType::f64) return std::nullopt;
+        if (p.coordinate_type != PlyType::none && prop.type != p.coordinate_type)
+          return std::nullopt;
+        p.coordinate_type = prop.type;
         p.coord_offset[k] = p.vertex_stride;
       }
     p.vertex_stride += detail::type_size(prop.type);
@@ -126,31 +132,43 @@ std::optional<PlainPly> plain_ply(std::span<const char> bytes, const detail::Hea
   return p;
 }
 
-inline Vec3d position(const Float32Key& k) {
-  return {std::bit_cast<float>(k[0]), std::bit_cast<float>(k[1]), std::bit_cast<float>(k[2])};
+// The floating-point type whose bits are Bits.
+template <class Bits>
+using FloatOf = std::conditional_t<sizeof(Bits) == 4, float, double>;
+
+template <class Bits>
+inline Vec3d position(const CoordinateKey<Bits>& k) {
+  return {std::bit_cast<FloatOf<Bits>>(k[0]), std::bit_cast<FloatOf<Bits>>(k[1]),
+          std::bit_cast<FloatOf<Bits>>(k[2])};
 }
 
-// The vertices' coordinates: float32 bits while the passes run, then turned into doubles in the
-// same storage, which is reserved at 24 B per vertex from the start. Only the first half is
-// touched until the conversion, so only it is resident: the doubles never sit beside a second,
-// float copy (which would be the pass's peak).
+// The vertices' coordinates: their bits (Bits = std::uint32_t for float32, std::uint64_t for
+// float64) while the passes run, then turned into doubles in the same storage, which is reserved
+// at 24 B per vertex from the start. For float32 only the first half is touched until the
+// conversion, so only it is resident: the doubles never sit beside a second, float copy (which
+// would be the pass's peak).
+template <class Bits>
 class VertexStore {
  public:
+  using Key = CoordinateKey<Bits>;
+  static_assert(sizeof(Key) <= sizeof(Vec3d));
+
   explicit VertexStore(std::size_t n) : storage_(new std::byte[n * sizeof(Vec3d)]), count_(n) {}
 
-  Float32Key* keys() { return std::launder(reinterpret_cast<Float32Key*>(storage_.get())); }
-  const Float32Key& operator[](std::size_t v) const {
-    return std::launder(reinterpret_cast<const Float32Key*>(storage_.get()))[v];
+  Key* keys() { return std::launder(reinterpret_cast<Key*>(storage_.get())); }
+  const Key& operator[](std::size_t v) const {
+    return std::launder(reinterpret_cast<const Key*>(storage_.get()))[v];
   }
   std::size_t size() const { return count_; }
   void resize_down(std::size_t n) { count_ = n; }
 
   // The coordinates as doubles, converted in place from the last vertex down: double v covers
-  // the bytes of keys 2v and 2v + 1, which are converted already (or v itself, read first).
+  // the bytes of keys 2v and 2v + 1 of float32 bits, which are converted already, or key v of
+  // float64 bits (v itself, read first).
   std::span<const Vec3d> to_doubles() {
-    const Float32Key* k = keys();
+    const Key* k = keys();
     for (std::size_t v = count_; v-- > 0;) {
-      const Float32Key key = k[v];
+      const Key key = k[v];
       new (storage_.get() + v * sizeof(Vec3d)) Vec3d(position(key));
     }
     return {std::launder(reinterpret_cast<const Vec3d*>(storage_.get())), count_};
@@ -161,17 +179,21 @@ class VertexStore {
   std::size_t count_;
 };
 
-// The input vertices' float32 bits, or nullopt when one is NaN or infinite; `box` their
-// bounding box as the doubles read_mesh_bytes() would hold (reference_point's box).
-std::optional<VertexStore> read_vertices(const PlainPly& ply, bool release_pages, Box3& box) {
-  VertexStore store(ply.vertex_count);
-  Float32Key* keys = store.keys();
+// The input vertices' bits, or nullopt when one is NaN or infinite; `box` their bounding box as
+// the doubles read_mesh_bytes() would hold (reference_point's box).
+template <class Bits>
+std::optional<VertexStore<Bits>> read_vertices(const PlainPly& ply, bool release_pages, Box3& box) {
+  using Key = CoordinateKey<Bits>;
+  // All exponent bits set (those of infinity): infinity or NaN.
+  constexpr Bits exponent = std::bit_cast<Bits>(std::numeric_limits<FloatOf<Bits>>::infinity());
+  VertexStore<Bits> store(ply.vertex_count);
+  Key* keys = store.keys();
   detail::PageRelease release(ply.vertices, release_pages, release_step);
   for (std::size_t i = 0; i < ply.vertex_count; ++i) {
     release.passed(ply.vertices + i * ply.vertex_stride);
     for (int k = 0; k < 3; ++k) {
-      const std::uint32_t u = ply.coordinate_bits(i, k);
-      if ((u & 0x7f800000u) == 0x7f800000u) return std::nullopt;
+      const Bits u = ply.coordinate_bits<Bits>(i, k);
+      if ((u & exponent) == exponent) return std::nullopt;
       keys[i][static_cast<std::size_t>(k)] = u;
     }
     box.add(position(keys[i]));
@@ -180,10 +202,11 @@ std::optional<VertexStore> read_vertices(const PlainPly& ply, bool release_pages
   return store;
 }
 
-// The exact weld of weld_map (weld.hpp) on the float32 bits: the same classes (bitwise equal
+// The exact weld of weld_map (weld.hpp) on the coordinates' bits: the same classes (bitwise equal
 // coordinates, −0 = +0), numbering (by first vertex) and representatives (the first vertex).
-struct Float32Weld {
-  VertexStore positions;                      // welded vertex → coordinates
+template <class Bits>
+struct CoordinateWeld {
+  VertexStore<Bits> positions;                // welded vertex → coordinates
   std::vector<std::uint32_t> to_welded;       // input → welded vertex; empty: nothing merged
   std::vector<std::uint32_t> representative;  // welded → lowest input vertex; empty likewise
 
@@ -194,48 +217,57 @@ struct Float32Weld {
 };
 
 // The table's keys kept in the input's own array, as weld_map_compacting keeps them (weld.cpp).
+template <class Key>
 struct KeysInPlace {
-  Float32Key* data;
+  Key* data;
   std::size_t count = 0;
   std::size_t size() const { return count; }
-  const Float32Key& operator[](std::size_t id) const { return data[id]; }
-  void push_back(const Float32Key& k) { data[count++] = k; }
+  const Key& operator[](std::size_t id) const { return data[id]; }
+  void push_back(const Key& k) { data[count++] = k; }
 };
 
 // Welds `keys` in place, or nullopt when a vertex welds to one whose bits differ (−0 and +0):
 // the input coordinates of the mass sums would then not be the welded ones this pass keeps.
-std::optional<Float32Weld> weld_float32(VertexStore&& store) {
-  Float32Weld w{std::move(store), {}, {}};
+template <class Bits>
+std::optional<CoordinateWeld<Bits>> weld_coordinates(VertexStore<Bits>&& store) {
+  using Key = CoordinateKey<Bits>;
+  using Traits = detail::CoordinateKeyTraits<Bits>;
+  CoordinateWeld<Bits> w{std::move(store), {}, {}};
   const std::size_t n = w.positions.size();
-  Float32Key* keys = w.positions.keys();
-  w.to_welded.resize(n);
+  Key* keys = w.positions.keys();
   {
     // Sized for one class per vertex, as a PLY usually has: the table never grows (growing
     // holds the old and the new table at once).
-    detail::WeldTable<Float32Key, detail::Float32KeyTraits> table(n);
-    KeysInPlace classes{keys};
+    detail::WeldTable<Key, Traits> table(n);
+    KeysInPlace<Key> classes{keys};
     // As weld.cpp: hash a few vertices ahead and prefetch their slots.
     constexpr std::size_t ahead = 16;
     std::array<std::uint64_t, 32> ring{};
-    for (std::size_t i = 0; i < std::min(ahead, n); ++i)
-      ring[i & 31] = detail::Float32KeyTraits::hash(keys[i]);
+    for (std::size_t i = 0; i < std::min(ahead, n); ++i) ring[i & 31] = Traits::hash(keys[i]);
     for (std::size_t i = 0; i < n; ++i) {
       if (i + ahead < n) {
-        const std::uint64_t h = detail::Float32KeyTraits::hash(keys[i + ahead]);
+        const std::uint64_t h = Traits::hash(keys[i + ahead]);
         ring[(i + ahead) & 31] = h;
         __builtin_prefetch(table.slot_address(h));
       }
-      const Float32Key key = keys[i];
+      const Key key = keys[i];
       bool inserted = false;
       const std::uint32_t id = table.find_or_insert(key, ring[i & 31], classes, inserted);
       if (!inserted && classes[id] != key) return std::nullopt;
-      w.to_welded[i] = id;
+      // The input-to-welded map is made at the first merge: until then every vertex is its own
+      // class (id = i), and a file without merges never needs it (2 B per triangle less at the
+      // weld's peak).
+      if (!w.to_welded.empty()) {
+        w.to_welded[i] = id;
+      } else if (id != i) {
+        w.to_welded.resize(n);
+        std::iota(w.to_welded.begin(), w.to_welded.begin() + static_cast<std::ptrdiff_t>(i), 0u);
+        w.to_welded[i] = id;
+      }
     }
     w.positions.resize_down(classes.count);
   }
-  if (w.positions.size() == n) {
-    std::vector<std::uint32_t>().swap(w.to_welded);  // the identity
-  } else {
+  if (!w.to_welded.empty()) {
     // Classes are numbered in order of their first vertex: class `next` first appears where
     // to_welded reaches it.
     w.representative.reserve(w.positions.size());
@@ -256,9 +288,10 @@ constexpr std::uint32_t runs_from_lower = 0x80000000u;
 
 // The pass over one file: the steps of analyze_welded_triangles with the corners read from the
 // face records.
+template <class Bits>
 class PlyPass {
  public:
-  PlyPass(const PlainPly& ply, Float32Weld& weld, bool release_pages)
+  PlyPass(const PlainPly& ply, CoordinateWeld<Bits>& weld, bool release_pages)
       : ply_(ply), weld_(weld), release_pages_(release_pages) {}
 
   std::array<Vec3d, 3> corner_positions(const std::array<std::uint32_t, 3>& w) const {
@@ -281,8 +314,8 @@ class PlyPass {
     }
   }
 
-  // each_face with indices of Bits's size (non-negative, checked: their bits read unsigned).
-  template <class Bits, class Visit>
+  // each_face with indices of Index's size (non-negative, checked: their bits read unsigned).
+  template <class Index, class Visit>
   void each_face_as(const Visit& visit) const {
     detail::PageRelease release(ply_.faces, release_pages_, release_step);
     for (std::size_t f = 0; f < ply_.face_count; ++f) {
@@ -291,9 +324,9 @@ class PlyPass {
       release.passed(r);
       const unsigned char* index = r + ply_.index_offset;
       visit(f, std::array<std::uint32_t, 3>{
-                   weld_.welded(detail::load_raw<Bits>(index, ply_.swap)),
-                   weld_.welded(detail::load_raw<Bits>(index + sizeof(Bits), ply_.swap)),
-                   weld_.welded(detail::load_raw<Bits>(index + 2 * sizeof(Bits), ply_.swap))});
+                   weld_.welded(detail::load_raw<Index>(index, ply_.swap)),
+                   weld_.welded(detail::load_raw<Index>(index + sizeof(Index), ply_.swap)),
+                   weld_.welded(detail::load_raw<Index>(index + 2 * sizeof(Index), ply_.swap))});
     }
     release.finish(ply_.faces_end());
   }
@@ -421,7 +454,7 @@ class PlyPass {
 
  private:
   const PlainPly& ply_;
-  Float32Weld& weld_;
+  CoordinateWeld<Bits>& weld_;
   bool release_pages_;
   std::vector<std::uint32_t> start_;         // half-edges per lower end, then the buckets' starts
   std::vector<bool> collapsed_;              // per face
@@ -434,26 +467,21 @@ std::size_t default_budget(std::size_t file_size) {
   return std::max<std::size_t>(file_size / 12 / sizeof(HalfEdge), std::size_t{1} << 12);
 }
 
-}  // namespace
-
-std::optional<WeldedTriangleProps> ply_triangle_props(std::span<const char> bytes,
-                                                      const std::string& name, MeshSource& source,
-                                                      const MassOptions& mass_options,
-                                                      const TopologyOptions& options,
-                                                      bool release_pages, PlyPassBudget budget) {
-  detail::check_topology_options(options);
-  if (options.weld_tolerance != 0) return std::nullopt;
-  detail::TextCursor c(bytes, name);
-  const detail::Header h = detail::parse_header(c);
-  const detail::Layout l = detail::find_layout(h, c);
-  const std::optional<PlainPly> ply = plain_ply(bytes, h, l);
-  if (!ply) return std::nullopt;
-
+// ply_triangle_props of a file that plain_ply accepts, its coordinates read as Bits (the bits of
+// float32 or float64).
+template <class Bits>
+std::optional<WeldedTriangleProps> plain_ply_props(std::span<const char> bytes,
+                                                   const std::string& name, MeshFormat format,
+                                                   const PlainPly* ply, MeshSource& source,
+                                                   const MassOptions& mass_options,
+                                                   const TopologyOptions& options,
+                                                   bool release_pages, PlyPassBudget budget) {
+  constexpr bool single_precision = sizeof(Bits) == 4;
   if (release_pages) detail::map_small_pages(bytes.data(), bytes.data() + bytes.size());
   Box3 box;
-  auto keys = read_vertices(*ply, release_pages, box);
+  auto keys = read_vertices<Bits>(*ply, release_pages, box);
   if (!keys) return std::nullopt;
-  auto weld = weld_float32(std::move(*keys));
+  auto weld = weld_coordinates(std::move(*keys));
   if (!weld) return std::nullopt;
   const Vec3d reference = box.centre();  // reference_point() of the input vertices
 
@@ -468,11 +496,12 @@ std::optional<WeldedTriangleProps> ply_triangle_props(std::span<const char> byte
   detail::WeldedFaces faces;  // the positions as doubles once the faces' arrays are gone
   detail::TopologyTally tally(r, faces, options);
 
-  PlyPass pass(*ply, *weld, release_pages);
+  PlyPass<Bits> pass(*ply, *weld, release_pages);
   BoundarySums sums;
   if (!pass.face_pass(reference, tally, sums)) return std::nullopt;
-  props.mass = mesh_mass_properties_from_sums(sums, reference, box, ply->vertex_count,
-                                              ply->face_count, ply->face_count, mass_options, true);
+  props.mass =
+      mesh_mass_properties_from_sums(sums, reference, box, ply->vertex_count, ply->face_count,
+                                     ply->face_count, mass_options, single_precision);
   pass.edge_pass(budget.half_edges ? budget.half_edges : default_budget(bytes.size()));
   r.edges = pass.edges.edges;
   r.collapsed_faces = pass.collapsed_faces;
@@ -509,10 +538,31 @@ std::optional<WeldedTriangleProps> ply_triangle_props(std::span<const char> byte
 
   source = MeshSource{};
   source.path = name;
-  source.format = h.format;
-  source.single_precision = true;
+  source.format = format;
+  source.single_precision = single_precision;
   if (release_pages) detail::release_pages(bytes.data(), bytes.data() + bytes.size());
   return props;
+}
+
+}  // namespace
+
+std::optional<WeldedTriangleProps> ply_triangle_props(std::span<const char> bytes,
+                                                      const std::string& name, MeshSource& source,
+                                                      const MassOptions& mass_options,
+                                                      const TopologyOptions& options,
+                                                      bool release_pages, PlyPassBudget budget) {
+  detail::check_topology_options(options);
+  if (options.weld_tolerance != 0) return std::nullopt;
+  detail::TextCursor c(bytes, name);
+  const detail::Header h = detail::parse_header(c);
+  const detail::Layout l = detail::find_layout(h, c);
+  const std::optional<PlainPly> ply = plain_ply(bytes, h, l);
+  if (!ply) return std::nullopt;
+  if (ply->coordinate_type == PlyType::f32)
+    return plain_ply_props<std::uint32_t>(bytes, name, h.format, &*ply, source, mass_options,
+                                          options, release_pages, budget);
+  return plain_ply_props<std::uint64_t>(bytes, name, h.format, &*ply, source, mass_options, options,
+                                        release_pages, budget);
 }
 
 }  // namespace pgamesh

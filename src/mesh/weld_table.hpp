@@ -1,6 +1,6 @@
 // Internal: the open-addressing table behind the exact welds (weld.cpp for meshes of doubles,
-// weld_binary_stl.cpp for float32 STL records, ply_topology.cpp for float32 PLY vertices), and
-// the hash mixer and float32 key they share.
+// weld_binary_stl.cpp for float32 STL records, ply_topology.cpp for float32 and float64 PLY
+// vertices), and the hash mixer and coordinate keys they share.
 #pragma once
 
 #include <array>
@@ -116,31 +116,39 @@ class WeldTable {
 
 namespace pgamesh::detail {
 
-// The bits of three float32 coordinates: the key of the exact weld of float32 vertices.
-using Float32Key = std::array<std::uint32_t, 3>;
+// The bits of three floating-point coordinates (Bits = std::uint32_t for float32, std::uint64_t for
+// float64): the key of the exact weld of vertices read as bits.
+template <class Bits>
+using CoordinateKey = std::array<Bits, 3>;
+using Float32Key = CoordinateKey<std::uint32_t>;
 
-// A float32 coordinate's bits with −0 folded to +0 (the bits of −0 are 0x80000000), so that the
-// two zeros weld while every other value welds only with itself.
-inline std::uint32_t folded_float32(std::uint32_t u) {
-  return u == 0x80000000u ? 0u : u;
+// A coordinate's bits with −0 folded to +0 (−0 is the sign bit alone), so that the two zeros weld
+// while every other value welds only with itself.
+template <class Bits>
+inline Bits folded_zero(Bits u) {
+  constexpr Bits negative_zero = Bits{1} << (8 * sizeof(Bits) - 1);
+  return u == negative_zero ? Bits{0} : u;
 }
 
 // Keys keep their own bits (the representative's coordinates, −0 included), and hash and compare
 // folded.
-struct Float32KeyTraits {
-  static std::uint64_t hash(const Float32Key& k) {
-    const std::uint32_t x = folded_float32(k[0]), y = folded_float32(k[1]),
-                        z = folded_float32(k[2]);
-    return mix64(((std::uint64_t{x} << 32) | y) ^ mix64(z + 0x9e3779b97f4a7c15ULL));
+template <class Bits>
+struct CoordinateKeyTraits {
+  static std::uint64_t hash(const CoordinateKey<Bits>& k) {
+    const Bits x = folded_zero(k[0]), y = folded_zero(k[1]), z = folded_zero(k[2]);
+    if constexpr (sizeof(Bits) == 4)
+      return mix64(((std::uint64_t{x} << 32) | y) ^ mix64(z + 0x9e3779b97f4a7c15ULL));
+    else
+      return mix64(x ^ mix64(y ^ mix64(z + 0x9e3779b97f4a7c15ULL)));
   }
   // Coordinate by coordinate, in registers: comparing folded copies of the arrays made the
   // compiler store them and reload 8 bytes spanning two 4-byte stores, a store-forwarding stall
   // on every probe.
-  static bool same(const Float32Key& a, const Float32Key& b) {
-    return folded_float32(a[0]) == folded_float32(b[0]) &&
-           folded_float32(a[1]) == folded_float32(b[1]) &&
-           folded_float32(a[2]) == folded_float32(b[2]);
+  static bool same(const CoordinateKey<Bits>& a, const CoordinateKey<Bits>& b) {
+    return folded_zero(a[0]) == folded_zero(b[0]) && folded_zero(a[1]) == folded_zero(b[1]) &&
+           folded_zero(a[2]) == folded_zero(b[2]);
   }
 };
+using Float32KeyTraits = CoordinateKeyTraits<std::uint32_t>;
 
 }  // namespace pgamesh::detail

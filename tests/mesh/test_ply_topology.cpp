@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <initializer_list>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -35,9 +36,10 @@ using test::expect_same_report;
 using test::run_cli;
 using test::test_temp_path;
 
-std::string ply_bytes(const Mesh& m, MeshFormat format = MeshFormat::ply_binary_le) {
+std::string ply_bytes(const Mesh& m, MeshFormat format = MeshFormat::ply_binary_le,
+                      bool single_precision = true) {
   WriteOptions o;
-  o.single_precision = true;
+  o.single_precision = single_precision;
   return write_mesh_bytes(m, format, o);
 }
 
@@ -80,14 +82,18 @@ Mesh sphere(double r, int stacks, int slices) {
   return test::triangulated(test::uv_sphere(r, stacks, slices));
 }
 
+// Little- and big-endian, float32 and float64 coordinates.
 void expect_same_both_endians(const Mesh& m) {
-  {
-    SCOPED_TRACE("little-endian");
-    expect_same_as_mesh_path(ply_bytes(m, MeshFormat::ply_binary_le));
-  }
-  {
-    SCOPED_TRACE("big-endian");
-    expect_same_as_mesh_path(ply_bytes(m, MeshFormat::ply_binary_be));
+  for (bool single : {true, false}) {
+    SCOPED_TRACE(single ? "float32" : "float64");
+    {
+      SCOPED_TRACE("little-endian");
+      expect_same_as_mesh_path(ply_bytes(m, MeshFormat::ply_binary_le, single));
+    }
+    {
+      SCOPED_TRACE("big-endian");
+      expect_same_as_mesh_path(ply_bytes(m, MeshFormat::ply_binary_be, single));
+    }
   }
 }
 
@@ -179,6 +185,7 @@ TEST(PlyTopology, RealMeshesAsBinaryPly) {
     if (!all_triangles(m)) m = test::triangulated(m);
     SCOPED_TRACE(entry.path().string());
     expect_same_as_mesh_path(ply_bytes(m));
+    expect_same_as_mesh_path(ply_bytes(m, MeshFormat::ply_binary_le, false), {0, 5});
     ++compared;
   }
   EXPECT_GT(compared, 5);
@@ -241,7 +248,19 @@ TEST(PlyTopology, Declines) {
   EXPECT_FALSE(new_path(ply_with_header(vertex_then_face, one_triangle(0, 1, 2).substr(0, 40))));
   EXPECT_FALSE(new_path(ply_bytes(test::unit_cube_quads())));
   EXPECT_FALSE(new_path(ply_bytes(test::unit_cube(), MeshFormat::ply_ascii)));
-  EXPECT_FALSE(new_path(write_mesh_bytes(test::unit_cube(), MeshFormat::ply_binary_le)));  // double
+  // x, y, z of different types.
+  std::string mixed;
+  for (int v = 0; v < 3; ++v) {
+    put(mixed, float(v == 1));
+    put(mixed, double(v == 2));
+    put(mixed, 0.f);
+  }
+  put(mixed, std::uint8_t{3});
+  for (std::int32_t v : {0, 1, 2}) put(mixed, v);
+  EXPECT_FALSE(new_path(
+      ply_with_header("element vertex 3\nproperty float x\nproperty double y\nproperty float z\n"
+                      "element face 1\nproperty list uchar int vertex_indices\n",
+                      mixed)));
   // Faces before vertices.
   std::string faces_first;
   put(faces_first, std::uint8_t{3});
@@ -256,6 +275,12 @@ TEST(PlyTopology, Declines) {
   zeros.vertices.push_back({-0.0, 0, 0});
   zeros.add_face({8, 2, 3});
   EXPECT_FALSE(new_path(ply_bytes(zeros)));
+  EXPECT_FALSE(new_path(ply_bytes(zeros, MeshFormat::ply_binary_le, false)));
+  // A non-finite coordinate, float32 and float64: the careful reader names it.
+  Mesh infinite = test::unit_cube();
+  infinite.vertices[5].y = std::numeric_limits<double>::infinity();
+  EXPECT_FALSE(new_path(ply_bytes(infinite)));
+  EXPECT_FALSE(new_path(ply_bytes(infinite, MeshFormat::ply_binary_le, false)));
   TopologyOptions tolerant;
   tolerant.weld_tolerance = 1e-3;
   MeshSource source;

@@ -1,10 +1,10 @@
 // Mass properties and topology of a binary PLY triangle mesh without its face list. A Mesh, or
 // even the welded triangles of triangle_topology.hpp, would hold 12 bytes of corners per triangle
 // — nearly the 13 bytes the file spends on each face — on top of the vertices, a union–find and
-// the edge pass's buckets. This pass keeps the welded vertices (float32, as the file gives them),
-// one union–find entry per face and the half-edges of one range of lower-end vertices at a time,
-// and re-reads the faces from the (mapped) file: once for the face sums, then once per range of
-// vertices for the edges (docs/topology.md).
+// the edge pass's buckets. This pass keeps the welded vertices (float32 or float64, as the file
+// gives them), one union–find entry per face and the half-edges of one range of lower-end vertices
+// at a time, and re-reads the faces from the (mapped) file: once for the face sums, then once per
+// range of vertices for the edges (docs/topology.md).
 #pragma once
 
 #include <cstddef>
@@ -19,7 +19,7 @@
 
 namespace pgamesh {
 
-// Half-edges per range of the edge pass: 0 = from the file's size (a quarter of it for their
+// Half-edges per range of the edge pass: 0 = from the file's size (a twelfth of it for their
 // records), or the number a caller gives (a test forces many passes on a small mesh).
 struct PlyPassBudget {
   std::size_t half_edges = 0;
@@ -30,10 +30,10 @@ struct PlyPassBudget {
 // &source) and analyze_topology(mesh, topology_options), and the same `source`. Returns nullopt
 // when this pass declines the file, and then the caller reads it the careful way (which also gives
 // the exact error of a malformed file): an ASCII file; a vertex element with lists or coordinates
-// that are not float32; other elements with data; faces before vertices; a face element with
-// other lists; no faces; a face that is not a triangle; an index out of range; data shorter than
-// declared; a non-finite coordinate; a vertex that welds to one whose bits differ (−0 and +0);
-// topology_options.weld_tolerance ≠ 0. Throws InputError for a malformed header and
+// that are not all float32 or all float64; other elements with data; faces before vertices; a face
+// element with other lists; no faces; a face that is not a triangle; an index out of range; data
+// shorter than declared; a non-finite coordinate; a vertex that welds to one whose bits differ (−0
+// and +0); topology_options.weld_tolerance ≠ 0. Throws InputError for a malformed header and
 // std::invalid_argument for a bad option, as the careful path does. With `release_pages` (bytes
 // of a read-only file mapping) the pages read are given back to the kernel behind each pass.
 std::optional<WeldedTriangleProps> ply_triangle_props(std::span<const char> bytes,
