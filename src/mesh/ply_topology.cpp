@@ -216,16 +216,6 @@ struct CoordinateWeld {
   }
 };
 
-// The table's keys kept in the input's own array, as weld_map_compacting keeps them (weld.cpp).
-template <class Key>
-struct KeysInPlace {
-  Key* data;
-  std::size_t count = 0;
-  std::size_t size() const { return count; }
-  const Key& operator[](std::size_t id) const { return data[id]; }
-  void push_back(const Key& k) { data[count++] = k; }
-};
-
 // Welds `keys` in place, or nullopt when a vertex welds to one whose bits differ (−0 and +0):
 // the input coordinates of the mass sums would then not be the welded ones this pass keeps.
 template <class Bits>
@@ -239,32 +229,28 @@ std::optional<CoordinateWeld<Bits>> weld_coordinates(VertexStore<Bits>&& store) 
     // Sized for one class per vertex, as a PLY usually has: the table never grows (growing
     // holds the old and the new table at once).
     detail::WeldTable<Key, Traits> table(n);
-    KeysInPlace<Key> classes{keys};
-    // As weld.cpp: hash a few vertices ahead and prefetch their slots.
-    constexpr std::size_t ahead = 16;
-    std::array<std::uint64_t, 32> ring{};
-    for (std::size_t i = 0; i < std::min(ahead, n); ++i) ring[i & 31] = Traits::hash(keys[i]);
-    for (std::size_t i = 0; i < n; ++i) {
-      if (i + ahead < n) {
-        const std::uint64_t h = Traits::hash(keys[i + ahead]);
-        ring[(i + ahead) & 31] = h;
-        __builtin_prefetch(table.slot_address(h));
-      }
-      const Key key = keys[i];
-      bool inserted = false;
-      const std::uint32_t id = table.find_or_insert(key, ring[i & 31], classes, inserted);
-      if (!inserted && classes[id] != key) return std::nullopt;
-      // The input-to-welded map is made at the first merge: until then every vertex is its own
-      // class (id = i), and a file without merges never needs it (2 B per triangle less at the
-      // weld's peak).
-      if (!w.to_welded.empty()) {
-        w.to_welded[i] = id;
-      } else if (id != i) {
-        w.to_welded.resize(n);
-        std::iota(w.to_welded.begin(), w.to_welded.begin() + static_cast<std::ptrdiff_t>(i), 0u);
-        w.to_welded[i] = id;
-      }
-    }
+    detail::KeysInPlace<Key> classes{keys};
+    const bool same_bits = detail::visit_prefetched(
+        table, n, [&](std::size_t i) { return Traits::hash(keys[i]); },
+        [&](std::size_t i, std::uint64_t h) {
+          const Key key = keys[i];
+          bool inserted = false;
+          const std::uint32_t id = table.find_or_insert(key, h, classes, inserted);
+          if (!inserted && classes[id] != key) return false;
+          // The input-to-welded map is made at the first merge: until then every vertex is its
+          // own class (id = i), and a file without merges never needs it (2 B per triangle less
+          // at the weld's peak).
+          if (!w.to_welded.empty()) {
+            w.to_welded[i] = id;
+          } else if (id != i) {
+            w.to_welded.resize(n);
+            std::iota(w.to_welded.begin(), w.to_welded.begin() + static_cast<std::ptrdiff_t>(i),
+                      0u);
+            w.to_welded[i] = id;
+          }
+          return true;
+        });
+    if (!same_bits) return std::nullopt;
     w.positions.resize_down(classes.count);
   }
   if (!w.to_welded.empty()) {

@@ -44,18 +44,6 @@ struct ExactTraits {
 };
 using ExactTable = detail::WeldTable<Vec3d, ExactTraits>;
 
-// The keys kept in the input's own array: the key of class id (the coordinates of its first
-// vertex) is written over vertex id. Classes are numbered in order of their first vertex, so id is
-// at most the vertex being welded and every vertex still to be read lies beyond it; the array ends
-// holding the welded positions.
-struct KeysInPlace {
-  Vec3d* data;
-  std::size_t count = 0;
-  std::size_t size() const { return count; }
-  const Vec3d& operator[](std::size_t id) const { return data[id]; }
-  void push_back(const Vec3d& v) { data[count++] = v; }
-};
-
 // The exact weld of `v`, the classes' first vertices appended to `keys` (a std::vector<Vec3d> or
 // KeysInPlace over v itself).
 template <class Keys>
@@ -68,22 +56,14 @@ WeldMap weld_exact(std::span<const Vec3d> v, Keys& keys) {
   ExactTable table(n / 4 + 16);
   out.representative.reserve(n / 4 + 16);
 
-  // The table is far larger than the caches; hashing a few vertices ahead and prefetching their
-  // slots hides most of the memory latency.
-  constexpr std::size_t ahead = 16;
-  std::array<std::uint64_t, 32> ring{};
-  for (std::size_t i = 0; i < std::min(ahead, n); ++i) ring[i & 31] = hash_of(key_of(v[i]));
-  for (std::size_t i = 0; i < n; ++i) {
-    if (i + ahead < n) {
-      const std::uint64_t h = hash_of(key_of(v[i + ahead]));
-      ring[(i + ahead) & 31] = h;
-      __builtin_prefetch(table.slot_address(h));
-    }
-    bool inserted = false;
-    const std::uint32_t id = table.find_or_insert(v[i], ring[i & 31], keys, inserted);
-    out.to_welded[i] = id;
-    if (inserted) out.representative.push_back(static_cast<std::uint32_t>(i));
-  }
+  detail::visit_prefetched(
+      table, n, [&](std::size_t i) { return hash_of(key_of(v[i])); },
+      [&](std::size_t i, std::uint64_t h) {
+        bool inserted = false;
+        out.to_welded[i] = table.find_or_insert(v[i], h, keys, inserted);
+        if (inserted) out.representative.push_back(static_cast<std::uint32_t>(i));
+        return true;
+      });
   out.merged = n - out.representative.size();
   return out;
 }
@@ -173,7 +153,7 @@ WeldMap weld_map_compacting(std::vector<Vec3d>& vertices, double tolerance) {
     throw std::length_error("weld: more than 2^32 - 2 vertices");
   WeldMap map;
   if (tolerance == 0) {
-    KeysInPlace keys{vertices.data()};
+    detail::KeysInPlace<Vec3d> keys{vertices.data()};
     map = weld_exact(vertices, keys);  // leaves the first vertex of every class at its id
   } else {
     map = weld_tolerance(vertices, tolerance);

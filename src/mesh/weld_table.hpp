@@ -3,6 +3,7 @@
 // vertices), and the hash mixer and coordinate keys they share.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -111,6 +112,37 @@ class WeldTable {
   std::vector<std::uint64_t> slots_;
   std::size_t mask_ = 0;
 };
+
+// A table's keys kept in an array of the caller's (the welded vertices' coordinates written over
+// the input's own, since class ids never run ahead of the vertex being welded): the key array
+// WeldTable takes, without a second copy of the keys.
+template <class Key>
+struct KeysInPlace {
+  Key* data;
+  std::size_t count = 0;
+  std::size_t size() const { return count; }
+  const Key& operator[](std::size_t id) const { return data[id]; }
+  void push_back(const Key& k) { data[count++] = k; }
+};
+
+// Calls visit(i, hash(i)) for i in [0, n) in order, each hash computed `ahead` vertices early and
+// its slot in `table` prefetched: the table is far larger than the caches, and this hides most
+// of a probe's memory latency. Stops, returning false, when visit returns false.
+template <class Table, class Hash, class Visit>
+bool visit_prefetched(const Table& table, std::size_t n, const Hash& hash, const Visit& visit) {
+  constexpr std::size_t ahead = 16;
+  std::array<std::uint64_t, 32> ring{};
+  for (std::size_t i = 0; i < std::min(ahead, n); ++i) ring[i & 31] = hash(i);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (i + ahead < n) {
+      const std::uint64_t h = hash(i + ahead);
+      ring[(i + ahead) & 31] = h;
+      __builtin_prefetch(table.slot_address(h));
+    }
+    if (!visit(i, ring[i & 31])) return false;
+  }
+  return true;
+}
 
 }  // namespace pgamesh::detail
 
