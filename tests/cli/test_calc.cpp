@@ -2,13 +2,14 @@
 // products, the 2-D polygon and the 4-D 5-cell), scripts with `let` on stdin, and the errors for
 // bad syntax, unknown blades and hostile input (column numbers, exit codes, no crash).
 #include <gtest/gtest.h>
-#include <unistd.h>
+#include <sys/wait.h>
 
 #include <array>
 #include <cstdio>
 #include <fstream>
 
 #include "support/golden.hpp"
+#include "support/temp_file.hpp"
 
 using pgamesh::test::json;
 using pgamesh::test::parse_json;
@@ -34,14 +35,9 @@ std::string quote(const std::string& s) {
 
 // Runs `pgamesh calc ARGS` with `input` on stdin.
 CalcRun calc(const std::string& args, const std::string& input = "") {
-  // one file pair per test case: ctest runs the cases of this executable in parallel
-  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  const std::string base =
-      ::testing::TempDir() + "/pgamesh_calc_" + info->name() + "_" + std::to_string(getpid());
-  const std::string in = base + ".in", err = base + ".err";
-  std::ofstream(in) << input;
+  const pgamesh::test::TempFile in(".in", input), err(".err");
   const std::string cmd =
-      std::string(PGAMESH_CLI_PATH) + " calc " + args + " < " + in + " 2> " + err;
+      std::string(PGAMESH_CLI_PATH) + " calc " + args + " < " + in.path() + " 2> " + err.path();
   CalcRun r{};
   if (FILE* p = popen(cmd.c_str(), "r")) {
     std::array<char, 4096> buf;
@@ -51,11 +47,9 @@ CalcRun calc(const std::string& args, const std::string& input = "") {
     r.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
   }
   {
-    std::ifstream e(err);
+    std::ifstream e(err.path());
     r.err.assign(std::istreambuf_iterator<char>(e), std::istreambuf_iterator<char>());
   }
-  std::remove(in.c_str());
-  std::remove(err.c_str());
   return r;
 }
 

@@ -1,18 +1,15 @@
 // `pgamesh check`: the JSON of DESIGN.md §5 on golden meshes, the exit codes, and the repaired mesh
 // written by --fix-orientation --output.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cmath>
-#include <cstdio>
-#include <filesystem>
-#include <fstream>
 #include <string>
 
 #include "pgamesh/mesh/read_mesh.hpp"
 #include "pgamesh/mesh/topology.hpp"
 #include "support/cli_run.hpp"
 #include "support/golden.hpp"
+#include "support/temp_file.hpp"
 
 namespace pgamesh {
 namespace {
@@ -21,21 +18,11 @@ using test::CliRun;
 using test::json;
 using test::parse_json;
 using test::run_cli;
-
-// Temporary files carry the process id: ctest runs the cases of this file in parallel processes.
-std::filesystem::path temp_path(const std::string& name) {
-  return std::filesystem::temp_directory_path() / (std::to_string(::getpid()) + "_" + name);
-}
+using test::TempFile;
 
 // Runs `pgamesh check ARGS`.
 CliRun run_check(const std::string& args) {
   return run_cli("check " + args);
-}
-
-std::string temp_file(const std::string& name, const std::string& content) {
-  const auto p = temp_path(name);
-  std::ofstream(p) << content;
-  return p.string();
 }
 
 // The unit cube without its top (z = 1) square, as OBJ.
@@ -69,7 +56,8 @@ TEST(CheckCli, JsonOfAClosedGoldenMesh) {
 }
 
 TEST(CheckCli, JsonOfAnOpenMeshListsItsLoop) {
-  const std::string path = temp_file("pgamesh_open_cube.obj", open_cube_obj);
+  const TempFile file("_open_cube.obj", open_cube_obj);
+  const std::string& path = file.path();
   const CliRun r = run_check("'" + path + "' --json");
   ASSERT_EQ(r.status, 0) << r.err;  // an open mesh is a result, not an error
   const json j = parse_json(r.out);
@@ -97,13 +85,14 @@ TEST(CheckCli, JsonOfAnOpenMeshListsItsLoop) {
 
 TEST(CheckCli, FixOrientationWritesTheRepairedMesh) {
   // The closed cube with faces 2 and 5 reversed.
-  const std::string in =
-      temp_file("pgamesh_flipped_cube.obj",
-                "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nv 0 0 1\nv 1 0 1\nv 0 1 1\nv 1 1 1\n"
-                "f 1 3 4\nf 1 4 2\nf 5 8 6\nf 5 8 7\nf 1 2 6\nf 1 5 6\nf 3 7 8\nf 3 8 4\nf 1 5 7\n"
-                "f 1 7 3\nf 2 4 8\nf 2 8 6\n");
-  const std::string out = temp_path("pgamesh_fixed_cube.obj").string();
-  std::filesystem::remove(out);
+  const TempFile flipped(
+      "_flipped_cube.obj",
+      "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nv 0 0 1\nv 1 0 1\nv 0 1 1\nv 1 1 1\n"
+      "f 1 3 4\nf 1 4 2\nf 5 8 6\nf 5 8 7\nf 1 2 6\nf 1 5 6\nf 3 7 8\nf 3 8 4\nf 1 5 7\n"
+      "f 1 7 3\nf 2 4 8\nf 2 8 6\n");
+  const TempFile repaired("_fixed_cube.obj");  // written by the CLI, removed with `repaired`
+  const std::string& in = flipped.path();
+  const std::string& out = repaired.path();
   const CliRun r = run_check("'" + in + "' --fix-orientation --output '" + out + "' --json");
   ASSERT_EQ(r.status, 0) << r.err;
   const json j = parse_json(r.out);
@@ -117,7 +106,8 @@ TEST(CheckCli, FixOrientationWritesTheRepairedMesh) {
 }
 
 TEST(CheckCli, UnreadableInputFailsWithTheReadersError) {
-  const std::string bad = temp_file("pgamesh_bad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n");
+  const TempFile file("_bad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n");
+  const std::string& bad = file.path();
   const CliRun r = run_check("'" + bad + "' --json");
   EXPECT_NE(r.status, 0);
   EXPECT_TRUE(r.out.empty());
@@ -128,7 +118,8 @@ TEST(CheckCli, UnreadableInputFailsWithTheReadersError) {
 }
 
 TEST(CheckCli, BadOptionsExitTwo) {
-  const std::string path = temp_file("pgamesh_open_cube.obj", open_cube_obj);
+  const TempFile file("_open_cube.obj", open_cube_obj);
+  const std::string& path = file.path();
   EXPECT_EQ(run_check("'" + path + "' --weld-tolerance -1").status, 2);
   EXPECT_EQ(run_check("'" + path + "' --weld-tolerance abc").status, 2);
   EXPECT_EQ(run_check("'" + path + "' --output x.obj").status, 2);  // needs --fix-orientation
@@ -138,9 +129,10 @@ TEST(CheckCli, BadOptionsExitTwo) {
 
 TEST(CheckCli, WeldToleranceIsReported) {
   // Two triangles whose shared edge differs by 1e-9 in one coordinate.
-  const std::string path = temp_file(
-      "pgamesh_seam.obj",
+  const TempFile file(
+      "_seam.obj",
       "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1.000000001 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 4 6 5\n");
+  const std::string& path = file.path();
   const json exact = parse_json(run_check("'" + path + "' --json").out);
   EXPECT_EQ(exact["boundary_edges"], 6);
   EXPECT_EQ(exact["components"], 2);

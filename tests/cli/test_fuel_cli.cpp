@@ -1,7 +1,6 @@
 // `pgamesh fuel` end to end: golden values through --json and --csv, the attitude convention,
 // and the errors (open mesh, zero up vector, levels outside the tank, volumes too large).
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <cstdio>
@@ -13,11 +12,13 @@
 
 #include "support/cli_run.hpp"
 #include "support/golden.hpp"
+#include "support/temp_file.hpp"
 
 using pgamesh::test::CliRun;
 using pgamesh::test::json;
 using pgamesh::test::parse_json;
 using pgamesh::test::run_cli;
+using pgamesh::test::TempFile;
 
 namespace {
 
@@ -156,8 +157,8 @@ TEST(FuelCli, AttitudeGridAndAcceleration) {
 
 TEST(FuelCli, Errors) {
   // An open mesh: the unit cube without its top is refused, with the gap, unless --force.
-  const auto dir = std::filesystem::temp_directory_path();
-  const auto open_path = dir / ("pgamesh_fuel_open_" + std::to_string(::getpid()) + ".obj");
+  const TempFile open_file("_open.obj");
+  const std::filesystem::path open_path = open_file.path();
   {
     std::ifstream in(golden_mesh("unit_cube.obj"));
     std::ofstream out(open_path);
@@ -173,7 +174,6 @@ TEST(FuelCli, Errors) {
   r = run_fuel(open_path.string() + " --level 0.5 --json --force");
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.err.find("warning"), std::string::npos);
-  std::filesystem::remove(open_path);
 
   const std::string cube = golden_mesh("unit_cube.obj");
   r = run_fuel(cube + " --up 0,0,0 --level 0.5");
@@ -206,8 +206,8 @@ TEST(FuelCli, Errors) {
 TEST(FuelCli, TopologyFromTheSharedReportRefusesInconsistentMeshes) {
   // The unit cube with one top triangle turned over: closed by its edges' count, but two edges
   // are used twice in one direction. Refused with the figures and notes of `pgamesh check`.
-  const auto path = std::filesystem::temp_directory_path() /
-                    ("pgamesh_fuel_flipped_" + std::to_string(::getpid()) + ".obj");
+  const TempFile flipped_file("_flipped.obj");
+  const std::filesystem::path path = flipped_file.path();
   {
     std::ifstream in(golden_mesh("unit_cube.obj"));
     std::ofstream out(path);
@@ -225,7 +225,6 @@ TEST(FuelCli, TopologyFromTheSharedReportRefusesInconsistentMeshes) {
   EXPECT_TRUE(out["forced"].get<bool>());
   EXPECT_FALSE(out["topology"]["orientation_consistent"].get<bool>());
   EXPECT_EQ(out["topology"]["inconsistent_edges"].get<int>(), 3);
-  std::filesystem::remove(path);
 
   // A good tank says so.
   r = run_fuel(golden_mesh("unit_cube.obj") + " --level 0.5 --json");

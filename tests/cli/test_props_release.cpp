@@ -6,8 +6,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <filesystem>
-#include <fstream>
 #include <string>
 
 #include "pgamesh/input_error.hpp"
@@ -17,12 +15,13 @@
 #include "support/cli_run.hpp"
 #include "support/golden.hpp"
 #include "support/solids.hpp"
+#include "support/temp_file.hpp"
 
 using pgamesh::test::CliRun;
 using pgamesh::test::json;
 using pgamesh::test::parse_json;
 using pgamesh::test::run_cli;
-using pgamesh::test::test_temp_path;
+using pgamesh::test::TempFile;
 
 namespace {
 
@@ -30,11 +29,10 @@ namespace {
 // the file name.
 void expect_same_props(const std::string& bytes, const std::string& flags) {
   SCOPED_TRACE(flags);
-  const std::string path = test_temp_path(".mesh");
-  std::ofstream(path, std::ios::binary) << bytes;
+  const TempFile file(".mesh", bytes);
+  const std::string& path = file.path();
   const CliRun mapped = run_cli("props \"" + path + "\" --json " + flags);
   const CliRun piped = run_cli("props - --json " + flags, path);
-  std::filesystem::remove(path);
   ASSERT_EQ(mapped.status, 0) << mapped.err;
   ASSERT_EQ(piped.status, 0) << piped.err;
   json a = parse_json(mapped.out), b = parse_json(piped.out);
@@ -107,8 +105,8 @@ TEST(PropsRelease, PolygonsNegativeIndicesAndUnweldedTriangles) {
 TEST(PropsRelease, ErrorsKeepTheirPositions) {
   const std::string obj = pgamesh::write_mesh_bytes(big_triangles(), pgamesh::MeshFormat::obj);
   const std::string bad = obj + "f 1 2 0\n";
-  const std::string path = test_temp_path(".obj");
-  std::ofstream(path, std::ios::binary) << bad;
+  const TempFile file(".obj", bad);
+  const std::string& path = file.path();
   for (const char* flags : {"", "--no-topology"}) {
     const CliRun mapped = run_cli(std::string("props \"") + path + "\" " + flags);
     const CliRun piped = run_cli(std::string("props - ") + flags, path);
@@ -124,7 +122,6 @@ TEST(PropsRelease, ErrorsKeepTheirPositions) {
     where += ":7:";
     EXPECT_NE(mapped.err.find(where), std::string::npos) << mapped.err;
   }
-  std::filesystem::remove(path);
 }
 
 // Without topology a PLY's faces are summed as they are parsed, never stored: the whole report
@@ -133,10 +130,8 @@ TEST(PropsRelease, ErrorsKeepTheirPositions) {
 TEST(PropsRelease, PlyWithoutAFaceListReportsAsTheMeshPath) {
   const pgamesh::Mesh mesh = pgamesh::test::uv_sphere(1.5, 200, 400);  // quads and triangles
   auto report = [](const std::string& bytes, const std::string& what) {
-    const std::string path = test_temp_path(what);
-    std::ofstream(path, std::ios::binary) << bytes;
-    const CliRun r = run_cli("props \"" + path + "\" --json --no-topology");
-    std::filesystem::remove(path);
+    const TempFile file(what, bytes);
+    const CliRun r = run_cli("props \"" + file.path() + "\" --json --no-topology");
     EXPECT_EQ(r.status, 0) << r.err;
     json j = parse_json(r.out);
     j.erase("file");
@@ -154,8 +149,8 @@ TEST(PropsRelease, PlyWithoutAFaceListReportsAsTheMeshPath) {
   // A vertex index out of range in the last face, after pages already given back.
   std::string bad = pgamesh::write_mesh_bytes(mesh, pgamesh::MeshFormat::ply_binary_le);
   bad[bad.size() - 2] = 0x7f;  // the last index's high byte
-  const std::string path = test_temp_path(".ply");
-  std::ofstream(path, std::ios::binary) << bad;
+  const TempFile file(".ply", bad);
+  const std::string& path = file.path();
   std::string expected_error;
   try {
     pgamesh::read_mesh_bytes({bad.data(), bad.size()}, path);
@@ -164,7 +159,6 @@ TEST(PropsRelease, PlyWithoutAFaceListReportsAsTheMeshPath) {
   }
   ASSERT_NE(expected_error.find("out of range"), std::string::npos) << expected_error;
   const CliRun mapped = run_cli("props \"" + path + "\" --no-topology");
-  std::filesystem::remove(path);
   EXPECT_EQ(mapped.status, 1);
   EXPECT_EQ(mapped.err, expected_error);
 }

@@ -1,43 +1,36 @@
 // MappedFile: the bytes of regular files, empty files, errors for missing paths and directories.
 #include <gtest/gtest.h>
 #include <sys/stat.h>
-#include <unistd.h>
 
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <thread>
 
 #include "pgamesh/input_error.hpp"
 #include "pgamesh/mesh/mapped_file.hpp"
+#include "support/temp_file.hpp"
 
 namespace pgamesh {
 namespace {
 
-std::string temp_path(const std::string& leaf) {
-  return (std::filesystem::temp_directory_path() /
-          ("pgamesh_mf_" + std::to_string(::getpid()) + "_" + leaf))
-      .string();
-}
+using test::TempFile;
 
 TEST(MappedFile, MapsTheBytesOfARegularFile) {
-  const std::string path = temp_path("a.bin");
   const std::string content("ab\0cd\xff", 6);
-  std::ofstream(path, std::ios::binary) << content;
+  const TempFile file(".bin", content);
+  const std::string& path = file.path();
   MappedFile f = MappedFile::open(path);
   EXPECT_EQ(std::string(f.bytes().data(), f.bytes().size()), content);
   MappedFile g = std::move(f);  // move-only; the mapping travels
   EXPECT_TRUE(f.bytes().empty());
   EXPECT_EQ(std::string(g.bytes().data(), g.bytes().size()), content);
   EXPECT_EQ(g.path(), path);
-  std::filesystem::remove(path);
 }
 
 TEST(MappedFile, EmptyFileIsAnEmptySpan) {
-  const std::string path = temp_path("empty");
-  std::ofstream(path).close();
+  const TempFile empty("_empty", "");
+  const std::string& path = empty.path();
   EXPECT_TRUE(MappedFile::open(path).bytes().empty());
-  std::filesystem::remove(path);
 }
 
 TEST(MappedFile, MissingFileAndDirectoryAreInputErrors) {
@@ -57,7 +50,8 @@ TEST(MappedFile, MissingFileAndDirectoryAreInputErrors) {
 }
 
 TEST(MappedFile, PipeIsReadIntoMemory) {
-  const std::string path = temp_path("fifo");
+  const TempFile fifo("_fifo");  // the path, for mkfifo to make
+  const std::string& path = fifo.path();
   ASSERT_EQ(::mkfifo(path.c_str(), 0600), 0);
   std::FILE* writer = nullptr;
   std::thread t([&] {
@@ -68,7 +62,6 @@ TEST(MappedFile, PipeIsReadIntoMemory) {
   MappedFile f = MappedFile::open(path);
   t.join();
   EXPECT_EQ(std::string(f.bytes().data(), f.bytes().size()), "solid x\nendsolid x\n");
-  std::filesystem::remove(path);
 }
 
 }  // namespace

@@ -1,7 +1,6 @@
 // `pgamesh props` end to end: runs the built CLI (PGAMESH_CLI_PATH) on golden and real meshes,
 // parses its JSON and checks it against golden/mesh_props.json; URDF/MJCF output; errors.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <array>
@@ -15,6 +14,7 @@
 #include "support/golden.hpp"
 #include "support/solids.hpp"
 #include "support/stl_bytes.hpp"
+#include "support/temp_file.hpp"
 
 using pgamesh::test::CliRun;
 using pgamesh::test::flatten;
@@ -23,6 +23,7 @@ using pgamesh::test::near_group;
 using pgamesh::test::near_scalar;
 using pgamesh::test::parse_json;
 using pgamesh::test::run_cli;
+using pgamesh::test::TempFile;
 
 namespace {
 
@@ -90,13 +91,10 @@ TEST(MassCli, DensityAndMassOptions) {
 
 TEST(MassCli, OpenMeshIsNotMeaningful) {
   // The unit cube without its top quad, written as OBJ: gap = missing area 1.
-  const auto path = std::filesystem::temp_directory_path() /
-                    ("pgamesh_props_open_" + std::to_string(::getpid()) + ".obj");
-  {
-    std::ofstream out(path);
-    out << "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
-        << "f 1 4 3 2\nf 1 2 6 5\nf 3 4 8 7\nf 2 3 7 6\nf 1 5 8 4\n";
-  }
+  const TempFile file("_open.obj",
+                      "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+                      "f 1 4 3 2\nf 1 2 6 5\nf 3 4 8 7\nf 2 3 7 6\nf 1 5 8 4\n");
+  const std::filesystem::path path = file.path();
   const CliRun r = run_cli("props \"" + path.string() + "\" --json");
   ASSERT_EQ(r.status, 0) << r.err;
   const json got = parse_json(r.out);
@@ -107,18 +105,13 @@ TEST(MassCli, OpenMeshIsNotMeaningful) {
   EXPECT_FALSE(got["meaningful_reasons"].empty());
   const CliRun text = run_cli("props \"" + path.string() + "\"");
   EXPECT_NE(text.out.find("NOT MEANINGFUL"), std::string::npos);
-  std::filesystem::remove(path);
 }
 
 TEST(MassCli, StreamedStlMatchesTopologyPath) {
   const pgamesh::Mesh m = pgamesh::test::uv_sphere(1.5, 16, 24);
-  const auto path = std::filesystem::temp_directory_path() /
-                    ("pgamesh_props_sphere_" + std::to_string(::getpid()) + ".stl");
-  {
-    const std::vector<char> bytes = pgamesh::test::binary_stl_bytes(m);
-    std::ofstream out(path, std::ios::binary);
-    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-  }
+  const std::vector<char> bytes = pgamesh::test::binary_stl_bytes(m);
+  const TempFile file("_sphere.stl", {bytes.data(), bytes.size()});
+  const std::filesystem::path path = file.path();
   const json fast = parse_json(run_cli("props \"" + path.string() + "\" --json --fast").out);
   const json full = parse_json(run_cli("props \"" + path.string() + "\" --json").out);
   EXPECT_EQ(fast["streamed"], true);
@@ -131,15 +124,13 @@ TEST(MassCli, StreamedStlMatchesTopologyPath) {
   EXPECT_DOUBLE_EQ(fast["volume"].get<double>(), full["volume"].get<double>());
   EXPECT_TRUE(
       near_group(flatten(fast["inertia_com"]), flatten(full["inertia_com"]), {1e-15, 1e-15}));
-  std::filesystem::remove(path);
 }
 
 TEST(MassCli, FusedAsciiStlMatchesTopologyPathAndKeepsErrorPositions) {
   const pgamesh::Mesh m = pgamesh::test::triangulated(pgamesh::test::uv_sphere(1.5, 16, 24));
-  const auto path = std::filesystem::temp_directory_path() /
-                    ("pgamesh_props_ascii_" + std::to_string(::getpid()) + ".stl");
   const std::string text = pgamesh::write_mesh_bytes(m, pgamesh::MeshFormat::stl_ascii);
-  std::ofstream(path, std::ios::binary) << text;
+  const TempFile file("_ascii.stl", text);
+  const std::filesystem::path path = file.path();
   const json fast = parse_json(run_cli("props \"" + path.string() + "\" --json --fast").out);
   const json full = parse_json(run_cli("props \"" + path.string() + "\" --json").out);
   EXPECT_EQ(fast["streamed"], true);
@@ -163,7 +154,6 @@ TEST(MassCli, FusedAsciiStlMatchesTopologyPathAndKeepsErrorPositions) {
     EXPECT_EQ(r.status, 1);
     EXPECT_NE(r.err.find(path.string() + where), std::string::npos) << r.err;
   }
-  std::filesystem::remove(path);
 }
 
 TEST(MassCli, UrdfAndMjcf) {

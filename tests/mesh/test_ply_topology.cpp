@@ -25,6 +25,7 @@
 #include "support/read_helpers.hpp"
 #include "support/same_topology.hpp"
 #include "support/solids.hpp"
+#include "support/temp_file.hpp"
 #include "topology_test_meshes.hpp"
 
 namespace pgamesh {
@@ -34,7 +35,7 @@ using test::CliRun;
 using test::expect_same_mass;
 using test::expect_same_report;
 using test::run_cli;
-using test::test_temp_path;
+using test::TempFile;
 
 std::string ply_bytes(const Mesh& m, MeshFormat format = MeshFormat::ply_binary_le,
                       bool single_precision = true) {
@@ -290,11 +291,8 @@ TEST(PlyTopology, Declines) {
 
 // Runs `pgamesh props` on `bytes` written to a PLY file.
 CliRun run_props(const std::string& bytes) {
-  const std::string ply = test_temp_path(".ply");
-  std::ofstream(ply, std::ios::binary) << bytes;
-  CliRun r = run_cli("props \"" + ply + "\"");
-  std::filesystem::remove(ply);
-  return r;
+  const TempFile ply(".ply", bytes);
+  return run_cli("props \"" + ply.path() + "\"");
 }
 
 TEST(PlyTopology, CliReportsTheCarefulReadersErrors) {

@@ -3,11 +3,8 @@
 // reading the same bytes from memory. The files are several MiB so that the readers release pages
 // (in 4 MiB steps) before they reach the data that is compared or the error that is reported.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cstring>
-#include <filesystem>
-#include <fstream>
 #include <string>
 
 #include "pgamesh/input_error.hpp"
@@ -20,22 +17,13 @@
 #include "pgamesh/mesh/write_mesh.hpp"
 #include "support/same_topology.hpp"
 #include "support/solids.hpp"
+#include "support/temp_file.hpp"
 
 namespace pgamesh {
 namespace {
 
 using test::expect_same_mass;
-
-// A file in the temporary folder, removed at the end of the test.
-struct TempFile {
-  std::filesystem::path path;
-  TempFile(const std::string& stem, const std::string& bytes)
-      : path(std::filesystem::temp_directory_path() /
-             (stem + "_" + std::to_string(::getpid()) + ".mesh")) {
-    std::ofstream(path, std::ios::binary) << bytes;
-  }
-  ~TempFile() { std::filesystem::remove(path); }
-};
+using test::TempFile;
 
 void expect_same_mesh(const Mesh& a, const Mesh& b) {
   ASSERT_EQ(a.vertices.size(), b.vertices.size());
@@ -55,18 +43,18 @@ void expect_same_source(const MeshSource& a, const MeshSource& b) {
 // The file read through its mapping with pages released, against its bytes read from memory;
 // returns the mesh.
 Mesh expect_same_reading(const std::string& stem, const std::string& bytes) {
-  const TempFile file(stem, bytes);
+  const TempFile file("_" + stem + ".mesh", bytes);
   MeshSource from_file, from_memory;
-  const Mesh a = read_mesh(file.path.string(), &from_file);
-  const Mesh b = read_mesh_bytes({bytes.data(), bytes.size()}, file.path.string(), &from_memory);
+  const Mesh a = read_mesh(file.path(), &from_file);
+  const Mesh b = read_mesh_bytes({bytes.data(), bytes.size()}, file.path(), &from_memory);
   expect_same_mesh(a, b);
   expect_same_source(from_file, from_memory);
   // The same with the flag given explicitly on a mapping the test holds.
-  const MappedFile mapped = MappedFile::open(file.path.string());
+  const MappedFile mapped = MappedFile::open(file.path());
   EXPECT_TRUE(mapped.mapped());
   MeshSource explicit_source;
-  const Mesh c = read_mesh_bytes(mapped.bytes(), file.path.string(), &explicit_source,
-                                 MeshFormat::unknown, true);
+  const Mesh c =
+      read_mesh_bytes(mapped.bytes(), file.path(), &explicit_source, MeshFormat::unknown, true);
   expect_same_mesh(c, b);
   expect_same_source(explicit_source, from_memory);
   // The mapping still reads back the released bytes.
@@ -77,15 +65,15 @@ Mesh expect_same_reading(const std::string& stem, const std::string& bytes) {
 // The error message of reading `bytes` from a released mapping, which must equal the one from
 // memory (file:line:column or byte offset, and the problem).
 void expect_same_error(const std::string& stem, const std::string& bytes) {
-  const TempFile file(stem, bytes);
+  const TempFile file("_" + stem + ".mesh", bytes);
   std::string from_file, from_memory;
   try {
-    read_mesh(file.path.string());
+    read_mesh(file.path());
   } catch (const InputError& e) {
     from_file = e.what();
   }
   try {
-    read_mesh_bytes({bytes.data(), bytes.size()}, file.path.string());
+    read_mesh_bytes({bytes.data(), bytes.size()}, file.path());
   } catch (const InputError& e) {
     from_memory = e.what();
   }
@@ -169,8 +157,8 @@ TEST(ReadReleasePages, StreamedStlPassesReleaseAndSumTheSame) {
   const Mesh tri = test::triangulated(test::uv_sphere(1.5, 100, 150));
   const std::string ascii = write_mesh_bytes(tri, MeshFormat::stl_ascii);
   {
-    const TempFile file("release_fused_ascii", ascii);
-    const MappedFile mapped = MappedFile::open(file.path.string());
+    const TempFile file("_release_fused_ascii.mesh", ascii);
+    const MappedFile mapped = MappedFile::open(file.path());
     const auto released = ascii_stl_mass_properties(mapped.bytes(), "f", {}, true);
     const auto kept = ascii_stl_mass_properties({ascii.data(), ascii.size()}, "f", {});
     ASSERT_TRUE(released && kept);
@@ -186,16 +174,16 @@ TEST(ReadReleasePages, StreamedStlPassesReleaseAndSumTheSame) {
                              "facet normal 0 0 1\nouter loop\nvertex 0 0 5\nvertex 1 0 5\n"
                              "vertex 1 1 5\nvertex 0 1 5\nendloop\nendfacet\n" +
                              ascii.substr(end);
-    const TempFile file("release_fused_quad", quad);
-    const MappedFile mapped = MappedFile::open(file.path.string());
+    const TempFile file("_release_fused_quad.mesh", quad);
+    const MappedFile mapped = MappedFile::open(file.path());
     EXPECT_FALSE(ascii_stl_mass_properties(mapped.bytes(), "f", {}, true));
     const Mesh m = read_mesh_bytes(mapped.bytes(), "f", nullptr, MeshFormat::unknown, true);
     EXPECT_EQ(m.face_count(), tri.face_count() + 1);
     EXPECT_EQ(m.face_size(m.face_count() - 1), 4u);
   }
   const std::string binary = write_mesh_bytes(tri, MeshFormat::stl_binary);
-  const TempFile file("release_streamed_binary", binary);
-  const MappedFile mapped = MappedFile::open(file.path.string());
+  const TempFile file("_release_streamed_binary.mesh", binary);
+  const MappedFile mapped = MappedFile::open(file.path());
   const auto view = binary_stl_view(mapped.bytes(), "f");
   const auto memory_view = binary_stl_view({binary.data(), binary.size()}, "f");
   ASSERT_TRUE(view && memory_view);

@@ -4,14 +4,12 @@
 // topology tests and the shared real meshes — and the weld of binary STL records against the weld
 // of the read mesh (classes, numbering, representatives, −0, NaN, released pages).
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <random>
 #include <string>
 
@@ -25,6 +23,7 @@
 #include "support/read_helpers.hpp"
 #include "support/same_topology.hpp"
 #include "support/stl_bytes.hpp"
+#include "support/temp_file.hpp"
 #include "topology_test_meshes.hpp"
 
 namespace pgamesh {
@@ -239,13 +238,8 @@ TEST(TopologyTriangles, StlWeldReleasingMappedPagesGivesTheSameResult) {
   // 327 680 triangles = 16 MB of records: several release steps.
   const Mesh m = icosphere(7, 1.0);
   const std::vector<char> bytes = test::binary_stl_bytes(m);
-  const std::string path = (std::filesystem::temp_directory_path() /
-                            ("pgamesh_release_" + std::to_string(::getpid()) + ".stl"))
-                               .string();
-  {
-    std::ofstream out(path, std::ios::binary);
-    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-  }
+  const test::TempFile file(".stl", {bytes.data(), bytes.size()});
+  const std::string& path = file.path();
   const auto memory = binary_stl_view(bytes, path);
   ASSERT_TRUE(memory.has_value());
   const WeldedTriangles kept = weld_binary_stl(*memory, path);
@@ -260,7 +254,6 @@ TEST(TopologyTriangles, StlWeldReleasingMappedPagesGivesTheSameResult) {
     // The released pages come back from the file when read again.
     EXPECT_TRUE(std::equal(bytes.begin(), bytes.end(), file.bytes().begin()));
   }
-  std::filesystem::remove(path);
   const TopologyReport r = analyze_welded_triangles(kept, bounding_box(kept.positions).centre());
   EXPECT_TRUE(r.closed);
   EXPECT_EQ(r.vertices, m.vertices.size());

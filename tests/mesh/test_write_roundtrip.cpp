@@ -2,17 +2,16 @@
 // vertices (bit-exact doubles in text formats and float64 PLY; float32-rounded for binary STL and
 // float PLY) and identical faces (STL: the fan of each polygon).
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <bit>
 #include <cmath>
-#include <filesystem>
 #include <limits>
 
 #include "pgamesh/mesh/read_mesh.hpp"
 #include "pgamesh/mesh/stl_binary.hpp"
 #include "pgamesh/mesh/write_mesh.hpp"
 #include "support/read_helpers.hpp"
+#include "support/temp_file.hpp"
 
 namespace pgamesh {
 namespace {
@@ -173,16 +172,14 @@ TEST(RoundTripReal, ShuttleThroughEveryFormat) {
 }
 
 TEST(WriteMesh, ToAFileAndBack) {
-  const std::string path = (std::filesystem::temp_directory_path() /
-                            ("pgamesh_wm_" + std::to_string(::getpid()) + ".ply"))
-                               .string();
+  const test::TempFile file(".ply");  // written by write_mesh, removed with `file`
+  const std::string& path = file.path();
   const Mesh m = awkward_mesh();
   write_mesh(m, path, MeshFormat::ply_binary_le);
   MeshSource src;
   const Mesh r = read_mesh(path, &src);
   EXPECT_EQ(src.path, path);
   expect_same_vertices(r.vertices, m.vertices);
-  std::filesystem::remove(path);
   EXPECT_THROW(write_mesh(m, "/nonexistent/dir/x.obj", MeshFormat::obj), std::runtime_error);
 }
 
