@@ -6,6 +6,8 @@
 #
 #   bench/compare_peers.sh [TRIANGLES ...]          default: 1000 10000 100000 1000000
 #   FORMATS="stl stl-ascii obj ply ply-bin" REPEAT=3 WORK=/tmp/pgamesh-bench BUILD=build/release CGAL=0|1
+#   PEERS="admesh numpy-stl cgal vtk open3d"   (the peers to run; e.g. PEERS=admesh for 10^7, where
+#                                               the Python peers take minutes per run)
 #
 # Peers (scripts/setup.sh bench installs them; missing ones are skipped): admesh (STL), a CGAL
 # program (bench/peers/cgal_props.cpp: PMP::volume/area/centroid), VTK vtkMassProperties
@@ -30,19 +32,21 @@ fi
 pgamesh=$root/$build/pgamesh
 gen=$root/$build/bench/pgamesh_gen_mesh
 cgal=$root/$build/bench/cgal_props
-if [ "${CGAL:-1}" = 0 ]; then
-  cgal=/nonexistent  # CGAL=0: leave the CGAL peer out (building it takes minutes)
+peers=${PEERS:-"admesh numpy-stl cgal vtk open3d"}
+wanted() { [[ " $peers " == *" $1 "* ]]; }
+if [ "${CGAL:-1}" = 0 ] || ! wanted cgal; then
+  cgal=/nonexistent  # leave the CGAL peer out (building it takes minutes)
 elif [ ! -x "$cgal" ] && dpkg-query -W -f='${Status}' libcgal-dev 2>/dev/null | grep -q "ok installed"; then
   echo "building the CGAL peer (takes a minute or two)..." >&2
   cmake --build --preset release -j2 --target cgal_props > /dev/null 2>&1 || true
 fi
 have() { command -v "$1" > /dev/null 2>&1; }
 pymod() { /usr/bin/python3 -c "import $1" > /dev/null 2>&1; }
-have_admesh=$(have admesh && echo 1 || echo 0)
-have_vtk=$(pymod vtk && echo 1 || echo 0)
-have_o3d=$(pymod open3d && echo 1 || echo 0)
-have_nstl=$(pymod stl && echo 1 || echo 0)
-have_cgal=$([ -x "$cgal" ] && echo 1 || echo 0)
+have_admesh=$(wanted admesh && have admesh && echo 1 || echo 0)
+have_vtk=$(wanted vtk && pymod vtk && echo 1 || echo 0)
+have_o3d=$(wanted open3d && pymod open3d && echo 1 || echo 0)
+have_nstl=$(wanted numpy-stl && pymod stl && echo 1 || echo 0)
+have_cgal=$(wanted cgal && [ -x "$cgal" ] && echo 1 || echo 0)
 
 # run_tool CMD...: best wall seconds and worst peak RSS (kB) of $repeat runs -> "$wall $rss", or
 # "fail" when the tool exits non-zero or runs for more than 15 minutes.
