@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Whole-process timings of `pgamesh props` against the I/O floor (cat FILE > /dev/null) and peer
 # tools from Debian, on generated closed tori of 10^3 ... 10^7 triangles, in one run. Reports wall
-# time (best of REPEAT runs, warm page cache), peak resident memory (/usr/bin/time %M, worst run)
-# and ratios as a Markdown table.
+# time (best of REPEAT rounds in which the tools take turns, warm page cache), peak resident memory
+# (/usr/bin/time %M, worst run) and ratios as a Markdown table.
 #
 #   bench/compare_peers.sh [TRIANGLES ...]          default: 1000 10000 100000 1000000
 #   FORMATS="stl stl-ascii obj ply ply-bin" REPEAT=3 WORK=/tmp/pgamesh-bench BUILD=build/release CGAL=0|1
@@ -48,23 +48,17 @@ have_o3d=$(wanted open3d && pymod open3d && echo 1 || echo 0)
 have_nstl=$(wanted numpy-stl && pymod stl && echo 1 || echo 0)
 have_cgal=$(wanted cgal && [ -x "$cgal" ] && echo 1 || echo 0)
 
-# run_tool CMD...: best wall seconds and worst peak RSS (kB) of $repeat runs -> "$wall $rss", or
-# "fail" when the tool exits non-zero or runs for more than 15 minutes.
-run_tool() {
-  local best="" rss=0 t0 t1 wall m
-  for _ in $(seq "$repeat"); do
-    t0=$(date +%s%N)
-    if ! /usr/bin/time -f %M -o "$work/rss" timeout 900 "$@" > "$work/out" 2> "$work/err"; then
-      echo fail
-      return
-    fi
-    t1=$(date +%s%N)
-    wall=$(( t1 - t0 ))
-    m=$(tail -1 "$work/rss")
-    [ -z "$best" ] || [ "$wall" -lt "$best" ] && best=$wall
-    [ "$m" -gt "$rss" ] && rss=$m
-  done
-  echo "$best $rss"
+# run_once CMD...: wall nanoseconds and peak RSS (kB) of one run -> "$wall $rss", or "fail" when
+# the tool exits non-zero or runs for more than 15 minutes.
+run_once() {
+  local t0 t1
+  t0=$(date +%s%N)
+  if ! /usr/bin/time -f %M -o "$work/rss" timeout 900 "$@" > "$work/out" 2> "$work/err"; then
+    echo fail
+    return
+  fi
+  t1=$(date +%s%N)
+  echo "$(( t1 - t0 )) $(tail -1 "$work/rss")"
 }
 
 ext_of() {
@@ -92,15 +86,30 @@ for n in "${sizes[@]}"; do
       [ "$have_vtk" = 1 ] && { tools+=("VTK"); cmds+=("/usr/bin/python3 $root/bench/peers/vtk_props.py $file"); }
       [ "$have_o3d" = 1 ] && { tools+=("Open3D"); cmds+=("/usr/bin/python3 $root/bench/peers/open3d_props.py $file"); }
     fi
+    # REPEAT rounds, each running every tool once in turn, so that a drift in the machine's speed
+    # (other work, the VM's memory) reaches all tools alike; best wall and worst RSS per tool.
+    best=() rss=() failed=()
+    for _ in $(seq "$repeat"); do
+      for i in "${!tools[@]}"; do
+        [ "${failed[$i]:-0}" = 1 ] && continue
+        # shellcheck disable=SC2086
+        r=$(run_once ${cmds[$i]})
+        if [ "$r" = fail ]; then
+          failed[i]=1
+          continue
+        fi
+        read -r ns kb <<< "$r"
+        if [ -z "${best[$i]:-}" ] || [ "$ns" -lt "${best[$i]}" ]; then best[i]=$ns; fi
+        if [ "$kb" -gt "${rss[$i]:-0}" ]; then rss[i]=$kb; fi
+      done
+    done
     floor="" ref=""
     for i in "${!tools[@]}"; do
-      # shellcheck disable=SC2086
-      r=$(run_tool ${cmds[$i]})
-      if [ "$r" = fail ]; then
+      if [ "${failed[$i]:-0}" = 1 ]; then
         echo "| $n | $fmt | $(awk "BEGIN{printf \"%.1f\", $bytes/1e6}") | ${tools[$i]} | fail | | | | |"
         continue
       fi
-      read -r ns kb <<< "$r"
+      ns=${best[$i]} kb=${rss[$i]}
       [ -z "$floor" ] && floor=$ns
       [ "${tools[$i]}" = "pgamesh props" ] && ref=$ns
       awk -v n="$n" -v f="$fmt" -v b="$bytes" -v t="${tools[$i]}" -v ns="$ns" -v kb="$kb" \
