@@ -49,11 +49,14 @@ have_nstl=$(wanted numpy-stl && pymod stl && echo 1 || echo 0)
 have_cgal=$(wanted cgal && [ -x "$cgal" ] && echo 1 || echo 0)
 
 # run_once CMD...: wall nanoseconds and peak RSS (kB) of one run -> "$wall $rss", or "fail" when
-# the tool exits non-zero or runs for more than 15 minutes.
+# the tool exits non-zero or runs for more than 15 minutes. Standard output goes to /dev/null, so
+# that cat measures the read floor: written to a file, its copy of the mesh would time the page
+# cache's writes too (2-5 x the read at 10^6-10^7 triangles), and their writeback would slow the
+# tool run after it.
 run_once() {
   local t0 t1
   t0=$(date +%s%N)
-  if ! /usr/bin/time -f %M -o "$work/rss" timeout 900 "$@" > "$work/out" 2> "$work/err"; then
+  if ! /usr/bin/time -f %M -o "$work/rss" timeout 900 "$@" > /dev/null 2> "$work/err"; then
     echo fail
     return
   fi
