@@ -15,32 +15,17 @@ namespace pgamesh {
 
 namespace {
 
-using detail::mix64;
-
-// The bits of a coordinate with −0 mapped to +0 (−0 + 0 = +0 in round-to-nearest), so that the two
-// zeros weld while every other value welds only with itself.
-inline std::uint64_t coordinate_bits(double d) {
-  d += 0.0;
-  return std::bit_cast<std::uint64_t>(d);
-}
-
-struct Key {
-  std::uint64_t x, y, z;
-  friend bool operator==(const Key&, const Key&) = default;
-};
-
-inline Key key_of(const Vec3d& v) {
-  return {coordinate_bits(v.x), coordinate_bits(v.y), coordinate_bits(v.z)};
-}
-
-inline std::uint64_t hash_of(const Key& k) {
-  return mix64(k.x ^ mix64(k.y ^ mix64(k.z + 0x9e3779b97f4a7c15ULL)));
-}
-
-// The table's keys are the classes' first vertices, compared by their folded bits.
+// The table's keys are the classes' first vertices: hashed and compared by their coordinates'
+// bits with −0 folded to +0 (CoordinateKeyTraits of weld_table.hpp, as the binary STL and PLY
+// welds hash theirs), so that the two zeros weld while every other value welds only with itself.
 struct ExactTraits {
-  static std::uint64_t hash(const Vec3d& v) { return hash_of(key_of(v)); }
-  static bool same(const Vec3d& a, const Vec3d& b) { return key_of(a) == key_of(b); }
+  using Bits = detail::CoordinateKeyTraits<std::uint64_t>;
+  static detail::CoordinateKey<std::uint64_t> bits(const Vec3d& v) {
+    return {std::bit_cast<std::uint64_t>(v.x), std::bit_cast<std::uint64_t>(v.y),
+            std::bit_cast<std::uint64_t>(v.z)};
+  }
+  static std::uint64_t hash(const Vec3d& v) { return Bits::hash(bits(v)); }
+  static bool same(const Vec3d& a, const Vec3d& b) { return Bits::same(bits(a), bits(b)); }
 };
 using ExactTable = detail::WeldTable<Vec3d, ExactTraits>;
 
@@ -57,7 +42,7 @@ WeldMap weld_exact(std::span<const Vec3d> v, Keys& keys) {
   out.representative.reserve(n / 4 + 16);
 
   detail::visit_prefetched(
-      table, n, [&](std::size_t i) { return hash_of(key_of(v[i])); },
+      table, n, [&](std::size_t i) { return ExactTraits::hash(v[i]); },
       [&](std::size_t i, std::uint64_t h) {
         bool inserted = false;
         out.to_welded[i] = table.find_or_insert(v[i], h, keys, inserted);
@@ -74,7 +59,8 @@ struct Cell {
 };
 struct CellHash {
   std::size_t operator()(const Cell& c) const {
-    return mix64(std::uint64_t(c.x) ^ mix64(std::uint64_t(c.y) ^ mix64(std::uint64_t(c.z))));
+    return detail::mix64(std::uint64_t(c.x) ^
+                         detail::mix64(std::uint64_t(c.y) ^ detail::mix64(std::uint64_t(c.z))));
   }
 };
 

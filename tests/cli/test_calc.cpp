@@ -2,24 +2,18 @@
 // products, the 2-D polygon and the 4-D 5-cell), scripts with `let` on stdin, and the errors for
 // bad syntax, unknown blades and hostile input (column numbers, exit codes, no crash).
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
-#include <array>
 #include <cstdio>
-#include <fstream>
 
+#include "support/cli_run.hpp"
 #include "support/golden.hpp"
 #include "support/temp_file.hpp"
 
+using pgamesh::test::CliRun;
 using pgamesh::test::json;
 using pgamesh::test::parse_json;
 
 namespace {
-
-struct CalcRun {
-  int status;
-  std::string out, err;
-};
 
 std::string quote(const std::string& s) {
   std::string q = "'";
@@ -34,23 +28,9 @@ std::string quote(const std::string& s) {
 }
 
 // Runs `pgamesh calc ARGS` with `input` on stdin.
-CalcRun calc(const std::string& args, const std::string& input = "") {
-  const pgamesh::test::TempFile in(".in", input), err(".err");
-  const std::string cmd =
-      std::string(PGAMESH_CLI_PATH) + " calc " + args + " < " + in.path() + " 2> " + err.path();
-  CalcRun r{};
-  if (FILE* p = popen(cmd.c_str(), "r")) {
-    std::array<char, 4096> buf;
-    std::size_t n;
-    while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) r.out.append(buf.data(), n);
-    const int st = pclose(p);
-    r.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-  }
-  {
-    std::ifstream e(err.path());
-    r.err.assign(std::istreambuf_iterator<char>(e), std::istreambuf_iterator<char>());
-  }
-  return r;
+CliRun calc(const std::string& args, const std::string& input = "") {
+  const pgamesh::test::TempFile in(".in", input);
+  return pgamesh::test::run_cli("calc " + args, in.path());
 }
 
 std::string num(double v) {
@@ -119,7 +99,7 @@ TEST(Calc, Pga3JoinsMatchGolden) {
     const std::string script = "let a = " + point_expr(in["a"]) +
                                "\nlet b = " + point_expr(in["b"]) +
                                "\nlet c = " + point_expr(in["c"]) + "\na & b\na & b & c\n";
-    const CalcRun r = calc("--algebra pga3 --json", script);
+    const CliRun r = calc("--algebra pga3 --json", script);
     ASSERT_EQ(r.status, 0) << r.err;
     const auto nl = r.out.find('\n');
     EXPECT_TRUE(json_matches(r.out.substr(0, nl), c["expected"]["line_ab"], t));
@@ -145,7 +125,7 @@ TEST(Calc, CgaOuterProductsMatchGolden) {
     } else {
       continue;
     }
-    const CalcRun r = calc("--algebra cga3 --json " + quote(expr));
+    const CliRun r = calc("--algebra cga3 --json " + quote(expr));
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_TRUE(json_matches(r.out, c["expected"]["blades"], pgamesh::test::tolerance_of(file, c),
                              {{"ei", "einf"}}))
@@ -157,7 +137,7 @@ TEST(Calc, CgaOuterProductsMatchGolden) {
 
 TEST(Calc, PolygonAreaAndFiveCellFromJoins) {
   // 2-D: area = ½ o ∨ Σ E_i (paper eq. 4.7) for the golden non-convex pentagon: 8.
-  const CalcRun area =
+  const CliRun area =
       calc("--algebra pga2",
            "let o = point(0,0)\n"
            "let a = point(0,0); let b = point(4,0); let c = point(4,3); let d = point(2,1); "
@@ -166,7 +146,7 @@ TEST(Calc, PolygonAreaAndFiveCellFromJoins) {
   ASSERT_EQ(area.status, 0) << area.err;
   EXPECT_EQ(area.out, "8\n");
   // 4-D: the join of the golden 5-cell's vertices is det = 156.
-  const CalcRun cell = calc(
+  const CliRun cell = calc(
       "--algebra pga4 'point(2,3,2,2) & point(-2,2,1,-2) & point(3,-2,-2,2) & "
       "point(-2,3,-3,-1) & point(2,-3,-1,-1)'");
   ASSERT_EQ(cell.status, 0) << cell.err;
@@ -188,7 +168,7 @@ TEST(Calc, ReadableOutputAndFunctions) {
 }
 
 TEST(Calc, ErrorsNameTheColumn) {
-  CalcRun r = calc("--algebra pga3 'e1 + e7'");
+  CliRun r = calc("--algebra pga3 'e1 + e7'");
   EXPECT_EQ(r.status, 1);
   EXPECT_EQ(r.err, "pgamesh calc: error at column 6: unknown blade 'e7' in algebra pga3\n");
   r = calc("'(e1 + e2'");
@@ -216,7 +196,7 @@ TEST(Calc, ErrorsNameTheColumn) {
 }
 
 TEST(Calc, ScriptsOnStdinWithLineNumbers) {
-  CalcRun r = calc("--algebra pga3", "# a comment\nlet a = point(1,0,0)\nlet b = 2 * a; b\nb +\n");
+  CliRun r = calc("--algebra pga3", "# a comment\nlet a = point(1,0,0)\nlet b = 2 * a; b\nb +\n");
   EXPECT_EQ(r.status, 1);
   EXPECT_EQ(r.out, "2 e032 + 2 e123\n");
   EXPECT_EQ(r.err, "<stdin>:4:4: error at column 4: unexpected end of expression\n");
@@ -226,7 +206,7 @@ TEST(Calc, ScriptsOnStdinWithLineNumbers) {
 
 TEST(Calc, HostileInputFailsCleanly) {
   // deep nesting is refused, not a stack overflow
-  CalcRun r = calc("-", std::string(100000, '(') + "1" + std::string(100000, ')'));
+  CliRun r = calc("-", std::string(100000, '(') + "1" + std::string(100000, ')'));
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.err.find("nested too deeply"), std::string::npos) << r.err.substr(0, 200);
   r = calc("-", std::string(100000, '-') + "1");

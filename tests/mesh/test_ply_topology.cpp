@@ -8,7 +8,6 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <initializer_list>
 #include <limits>
 #include <optional>
@@ -22,6 +21,7 @@
 #include "pgamesh/mesh/welded_triangles.hpp"
 #include "pgamesh/mesh/write_mesh.hpp"
 #include "support/cli_run.hpp"
+#include "support/file_bytes.hpp"
 #include "support/read_helpers.hpp"
 #include "support/same_topology.hpp"
 #include "support/solids.hpp"
@@ -197,14 +197,10 @@ TEST(PlyTopology, RealPlyFilesAsGiven) {
   const std::string binary = test::shared_mesh("assimp-testmodels/cube_binary.ply");
   const std::string ascii = test::shared_mesh("octave-matgeom/dodecahedron.ply");
   if (binary.empty() || ascii.empty()) GTEST_SKIP() << "../shared/meshes not found: skipped";
-  const auto slurp = [](const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), {});
-  };
-  const std::string bytes = slurp(binary);
+  const std::string bytes = test::file_bytes(binary);
   EXPECT_TRUE(new_path(bytes).has_value());
   expect_same_as_mesh_path(bytes);
-  EXPECT_FALSE(new_path(slurp(ascii)).has_value());
+  EXPECT_FALSE(new_path(test::file_bytes(ascii)).has_value());
 }
 
 // A binary little-endian PLY with a header of our own: `vertex` and `face` lines and raw data.

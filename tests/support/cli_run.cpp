@@ -3,21 +3,11 @@
 #include <sys/wait.h>
 
 #include <cstdlib>
-#include <fstream>
-#include <iterator>
 
+#include "support/file_bytes.hpp"
 #include "support/temp_file.hpp"
 
 namespace pgamesh::test {
-
-namespace {
-
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
-
-}  // namespace
 
 CliRun run_cli(const std::string& args, const std::string& stdin_path) {
   const TempFile out(".out"), err(".err");
@@ -27,8 +17,8 @@ CliRun run_cli(const std::string& args, const std::string& stdin_path) {
   CliRun r;
   const int raw = std::system(cmd.c_str());
   r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  r.out = slurp(out.path());
-  r.err = slurp(err.path());
+  r.out = file_bytes(out.path());
+  r.err = file_bytes(err.path());
   return r;
 }
 

@@ -5,19 +5,14 @@
 
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <stdexcept>
 #include <string>
 
+#include "support/file_bytes.hpp"
 #include "support/temp_file.hpp"
 
 namespace pgamesh::test {
 namespace {
-
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
 
 TEST(TempFile, HoldsTheGivenBytesUntilItGoesOutOfScope) {
   const std::string bytes("a\0b\r\n\xff", 6);  // binary: a NUL and a CR LF kept as they are
@@ -25,7 +20,7 @@ TEST(TempFile, HoldsTheGivenBytesUntilItGoesOutOfScope) {
   {
     const TempFile file(".bin", bytes);
     path = file.path();
-    EXPECT_EQ(slurp(path), bytes);
+    EXPECT_EQ(file_bytes(path), bytes);
     EXPECT_EQ(std::filesystem::file_size(path), 6u);
   }
   EXPECT_FALSE(std::filesystem::exists(path));
@@ -94,7 +89,7 @@ TEST_P(TempFileParameterised, SlashesInTheTestNameAreReplaced) {
                 "pgamesh_Values_TempFileParameterised_SlashesInTheTestNameAreReplaced_0_", 0),
             0u)
       << file.path();
-  EXPECT_EQ(slurp(file.path()), "7");
+  EXPECT_EQ(file_bytes(file.path()), "7");
 }
 
 INSTANTIATE_TEST_SUITE_P(Values, TempFileParameterised, ::testing::Values(7));
