@@ -2,18 +2,6 @@
 
 namespace pgamesh {
 
-BoundarySums& BoundarySums::operator+=(const BoundarySums& o) {
-  area2 += o.area2;
-  carrier_sum.e0 += o.carrier_sum.e0;
-  carrier_sum.e1 += o.carrier_sum.e1;
-  carrier_sum.e2 += o.carrier_sum.e2;
-  carrier_sum.e3 += o.carrier_sum.e3;
-  volume6 += o.volume6;
-  moment24 += o.moment24;
-  for (int i = 0; i < 6; ++i) second120[i] += o.second120[i];
-  return *this;
-}
-
 // The scalings of the header's table: paper Table 1 (V = Σ D / 6, area = Σ ‖F‖ / 2), eq. 5.3 as
 // corrected in ERRATA §0.2 (∫r = Σ D (a + b + c) / 24 with o = 0 here), pyramid reference eq. 24
 // (∫rrᵀ = Σ D (…) / 120) and Cor. 4.1 (gap = ½ ‖Σ F‖).

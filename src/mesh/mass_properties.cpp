@@ -38,9 +38,9 @@ Mat3 nan_matrix() {
 BoundarySums mesh_boundary_sums(const Mesh& mesh, Vec3d reference, unsigned threads) {
   check_corners(mesh);
   return chunked_sums(
-      mesh.face_count(), threads, [&](BoundarySums& s, std::size_t begin, std::size_t end) {
+      mesh.face_count(), threads, [&](LanedSums<>& s, std::size_t begin, std::size_t end) {
         for (std::size_t f = begin; f < end; ++f)
-          add_mesh_face(s, mesh.vertices.data(), mesh.face(f), mesh.face_size(f), reference);
+          add_mesh_face(s[f], mesh.vertices.data(), mesh.face(f), mesh.face_size(f), reference);
       });
 }
 

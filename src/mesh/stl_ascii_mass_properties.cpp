@@ -87,7 +87,7 @@ struct PieceSums {
 // solid, 'endsolid' and 'solid' lines between them — starting in the given solid state. Stops at
 // the first thing read_stl_ascii would read differently or reject (plain = false).
 void sum_piece(const char* p, const char* end, bool in_solid, Vec3d ref, PieceSums& out) {
-  BoundarySums s;
+  LanedSums<> s;  // the lanes of chunked_sums, so that a one-piece file sums as one chunk
   std::uint64_t facets = 0;
   out.plain = false;
   for (;;) {
@@ -105,7 +105,7 @@ void sum_piece(const char* p, const char* end, bool in_solid, Vec3d ref, PieceSu
       if (!keyword(p, end, "endloop")) return;  // a fourth vertex: a polygon for the careful path
       skip_space(p, end);
       if (!keyword(p, end, "endfacet")) return;
-      add_triangle(s, a - ref, b - ref, c - ref);
+      add_triangle(s[facets], a - ref, b - ref, c - ref);
       ++facets;
     } else if (in_solid && keyword(p, end, "endsolid")) {
       skip_line(p, end);
@@ -117,7 +117,7 @@ void sum_piece(const char* p, const char* end, bool in_solid, Vec3d ref, PieceSu
       return;
     }
   }
-  out.sums = s;
+  out.sums = s.total();
   out.facets = facets;
   out.plain = true;
   out.in_solid = in_solid;

@@ -34,6 +34,28 @@ bool finite(const BoundarySums& s) {
          std::isfinite(s.second120[2]);
 }
 
+// Adds the records [begin, end) of `records` (begin a multiple of sum_lanes), record f to lanes[f]
+// as add_triangle does: four records at a time in Double4 lanes, which give the same bits, the
+// last few one by one.
+void add_records(LanedSums<>& lanes, const unsigned char* records, std::size_t begin,
+                 std::size_t end, Vec3d ref) {
+  const Vec3<Double4> ref4{ref.x, ref.y, ref.z};
+  BasicBoundarySums<Double4> four;
+  std::size_t f = begin;
+  const unsigned char* r = records + stl_record_bytes * begin;
+  for (; f + sum_lanes <= end; f += sum_lanes, r += sum_lanes * stl_record_bytes) {
+    Vec3<Double4> v[3];
+    stl_triangles4(r, v);
+    add_triangle(four, v[0] - ref4, v[1] - ref4, v[2] - ref4);
+  }
+  for (std::size_t j = 0; j < sum_lanes; ++j) lanes.lane[j] = lane(four, static_cast<int>(j));
+  for (; f < end; ++f, r += stl_record_bytes) {
+    Vec3d v[3];
+    stl_triangle(r, v);
+    add_triangle(lanes[f], v[0] - ref, v[1] - ref, v[2] - ref);
+  }
+}
+
 }  // namespace
 
 MassProperties binary_stl_mass_properties(const BinaryStlView& view, const std::string& name,
@@ -43,13 +65,8 @@ MassProperties binary_stl_mass_properties(const BinaryStlView& view, const std::
   if (release_records) detail::release_pages(view.records, records_end);
   const Vec3d ref = box.centre();
   const BoundarySums total = chunked_sums(
-      view.count, options.threads, [&](BoundarySums& s, std::size_t begin, std::size_t end) {
-        const unsigned char* r = view.records + stl_record_bytes * begin;
-        for (std::size_t i = begin; i < end; ++i, r += stl_record_bytes) {
-          Vec3d v[3];
-          stl_triangle(r, v);
-          add_triangle(s, v[0] - ref, v[1] - ref, v[2] - ref);
-        }
+      view.count, options.threads, [&](LanedSums<>& lanes, std::size_t begin, std::size_t end) {
+        add_records(lanes, view.records, begin, end, ref);
         if (release_records)
           detail::release_pages(view.records + stl_record_bytes * begin,
                                 view.records + stl_record_bytes * end);

@@ -191,13 +191,13 @@ BoundarySums face_pass(const WeldedTriangles& mesh, Vec3d reference, detail::Top
   const Vec3d* p = mesh.positions.data();
   const std::uint32_t* corner = mesh.corners.data();
   return chunked_sums(
-      mesh.triangle_count(), 1, [&](BoundarySums& s, std::size_t begin, std::size_t end) {
+      mesh.triangle_count(), 1, [&](LanedSums<>& s, std::size_t begin, std::size_t end) {
         for (std::size_t f = begin; f < end; ++f) {
           const std::uint32_t* c = corner + 3 * f;
           const std::array<Vec3d, 3> v{p[c[0]], p[c[1]], p[c[2]]};
           double carrier_norm = 0;
-          const pga3::Plane<double> carrier =
-              add_triangle(s, v[0] - reference, v[1] - reference, v[2] - reference, carrier_norm);
+          const pga3::Plane<double> carrier = add_triangle(s[f], v[0] - reference, v[1] - reference,
+                                                           v[2] - reference, carrier_norm);
           detail::tally_triangle(tally, static_cast<std::uint32_t>(f), collapsed(corner, f), v,
                                  carrier, carrier_norm);
         }

@@ -73,9 +73,9 @@ MassProperties mass_properties(const WeldedTriangles& mesh, Vec3d reference,
   // The triangle case of mesh_boundary_sums, on the welded coordinates (equal to the input ones).
   const BoundarySums sums =
       chunked_sums(mesh.triangle_count(), options.threads,
-                   [&](BoundarySums& s, std::size_t begin, std::size_t end) {
+                   [&](LanedSums<>& s, std::size_t begin, std::size_t end) {
                      for (std::size_t t = begin; t < end; ++t)
-                       add_triangle(s, p[c[3 * t]] - reference, p[c[3 * t + 1]] - reference,
+                       add_triangle(s[t], p[c[3 * t]] - reference, p[c[3 * t + 1]] - reference,
                                     p[c[3 * t + 2]] - reference);
                    });
   return mass_properties_from_welded_sums(mesh, sums, reference, options, single_precision);

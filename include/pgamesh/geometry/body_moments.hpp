@@ -20,6 +20,7 @@
 #include <array>
 #include <cstddef>
 
+#include "pgamesh/algebra/double4.hpp"
 #include "pgamesh/algebra/pga3.hpp"
 #include "pgamesh/algebra/vec3.hpp"
 #include "pgamesh/geometry/carrier.hpp"
@@ -31,24 +32,51 @@ using Mat3 = std::array<std::array<double, 3>, 3>;
 
 // Raw sums, scaled as accumulated (×2, ×6, ×24, ×120): adding partial sums is reassociation only,
 // so sums from several threads combine with +=, in a fixed order for reproducible results.
-struct BoundarySums {
-  double area2 = 0;                   // Σ ‖F‖ = 2 × area
-  pga3::Plane<double> carrier_sum{};  // Σ F
-  double volume6 = 0;                 // Σ o ∨ F
-  Vec3d moment24{};                   // Σ (o ∨ F)(a + b + c)
-  std::array<double, 6> second120{};  // Σ (o ∨ F)(aaᵀ + bbᵀ + ccᵀ + ssᵀ): xx, yy, zz, xy, yz, zx
+// T is double, or Double4 for four faces summed side by side (chunked_sums.hpp's lanes).
+template <class T>
+struct BasicBoundarySums {
+  T area2{};                     // Σ ‖F‖ = 2 × area
+  pga3::Plane<T> carrier_sum{};  // Σ F
+  T volume6{};                   // Σ o ∨ F
+  Vec3<T> moment24{};            // Σ (o ∨ F)(a + b + c)
+  std::array<T, 6> second120{};  // Σ (o ∨ F)(aaᵀ + bbᵀ + ccᵀ + ssᵀ): xx, yy, zz, xy, yz, zx
 
-  BoundarySums& operator+=(const BoundarySums& o);
+  BasicBoundarySums& operator+=(const BasicBoundarySums& o) {
+    area2 += o.area2;
+    carrier_sum.e0 += o.carrier_sum.e0;
+    carrier_sum.e1 += o.carrier_sum.e1;
+    carrier_sum.e2 += o.carrier_sum.e2;
+    carrier_sum.e3 += o.carrier_sum.e3;
+    volume6 += o.volume6;
+    moment24 += o.moment24;
+    for (int i = 0; i < 6; ++i) second120[i] += o.second120[i];
+    return *this;
+  }
 };
+
+using BoundarySums = BasicBoundarySums<double>;
+
+// Lane j of sums of four faces side by side: the sums, in double, of the faces of lane j.
+inline BoundarySums lane(const BasicBoundarySums<Double4>& s, int j) {
+  BoundarySums out;
+  out.area2 = s.area2.lane(j);
+  out.carrier_sum = {s.carrier_sum.e0.lane(j), s.carrier_sum.e1.lane(j), s.carrier_sum.e2.lane(j),
+                     s.carrier_sum.e3.lane(j)};
+  out.volume6 = s.volume6.lane(j);
+  out.moment24 = {s.moment24.x.lane(j), s.moment24.y.lane(j), s.moment24.z.lane(j)};
+  for (int i = 0; i < 6; ++i) out.second120[i] = s.second120[i].lane(j);
+  return out;
+}
 
 // Adds the solid parts of the signed tetrahedron (o, a, b, c) — volume, first and second
 // moments, with D = o ∨ F = det(a, b, c) — and returns the carrier F = a ∨ b ∨ c. Coordinates are
 // relative to the reference point. The surface parts go through add_face_carrier.
-inline pga3::Plane<double> add_tetrahedron(BoundarySums& s, Vec3d a, Vec3d b, Vec3d c) {
-  const pga3::Plane<double> f = triangle_carrier(a, b, c);
-  const double d = origin_join(f);
+template <class T>
+pga3::Plane<T> add_tetrahedron(BasicBoundarySums<T>& s, Vec3<T> a, Vec3<T> b, Vec3<T> c) {
+  const pga3::Plane<T> f = triangle_carrier(a, b, c);
+  const T d = origin_join(f);
   s.volume6 += d;
-  const Vec3d sum = a + b + c;
+  const Vec3<T> sum = a + b + c;
   s.moment24 += d * sum;
   s.second120[0] += d * (a.x * a.x + b.x * b.x + c.x * c.x + sum.x * sum.x);
   s.second120[1] += d * (a.y * a.y + b.y * b.y + c.y * c.y + sum.y * sum.y);
@@ -63,7 +91,8 @@ inline pga3::Plane<double> add_tetrahedron(BoundarySums& s, Vec3d a, Vec3d b, Ve
 // polygon, f is the sum of its fan carriers and ½‖f‖ the planar polygon area of §4c) and f itself
 // to Σ F, whose norm measures the gap (Cor. 4.1). `norm_f` is pga3::norm(f), for a caller that
 // needs it elsewhere too (the topology pass sums it twice; one square root serves both).
-inline void add_face_carrier(BoundarySums& s, const pga3::Plane<double>& f, double norm_f) {
+template <class T>
+void add_face_carrier(BasicBoundarySums<T>& s, const pga3::Plane<T>& f, T norm_f) {
   s.area2 += norm_f;
   s.carrier_sum.e0 += f.e0;
   s.carrier_sum.e1 += f.e1;
@@ -72,16 +101,17 @@ inline void add_face_carrier(BoundarySums& s, const pga3::Plane<double>& f, doub
 }
 
 // The same with the norm of f computed here.
-inline void add_face_carrier(BoundarySums& s, const pga3::Plane<double>& f) {
+template <class T>
+void add_face_carrier(BasicBoundarySums<T>& s, const pga3::Plane<T>& f) {
   add_face_carrier(s, f, pga3::norm(f));
 }
 
 // Adds the triangle (a, b, c) as add_triangle below does, and also gives the norm ‖F‖ of its
 // carrier in `norm_f`, for a caller that sums it again (the topology pass's face tally): one
 // square root serves both.
-inline pga3::Plane<double> add_triangle(BoundarySums& s, Vec3d a, Vec3d b, Vec3d c,
-                                        double& norm_f) {
-  const pga3::Plane<double> f = add_tetrahedron(s, a, b, c);
+template <class T>
+pga3::Plane<T> add_triangle(BasicBoundarySums<T>& s, Vec3<T> a, Vec3<T> b, Vec3<T> c, T& norm_f) {
+  const pga3::Plane<T> f = add_tetrahedron(s, a, b, c);
   norm_f = pga3::norm(f);
   add_face_carrier(s, f, norm_f);
   return f;
@@ -89,8 +119,9 @@ inline pga3::Plane<double> add_triangle(BoundarySums& s, Vec3d a, Vec3d b, Vec3d
 
 // Adds the triangle (a, b, c), coordinates relative to the reference point, and returns its
 // carrier F = a ∨ b ∨ c (for a caller that sums more of it, as the topology pass does).
-inline pga3::Plane<double> add_triangle(BoundarySums& s, Vec3d a, Vec3d b, Vec3d c) {
-  double norm_f = 0;
+template <class T>
+pga3::Plane<T> add_triangle(BasicBoundarySums<T>& s, Vec3<T> a, Vec3<T> b, Vec3<T> c) {
+  T norm_f{};
   return add_triangle(s, a, b, c, norm_f);
 }
 

@@ -11,6 +11,7 @@
 #include <span>
 #include <string>
 
+#include "pgamesh/algebra/double4.hpp"
 #include "pgamesh/algebra/vec3.hpp"
 
 namespace pgamesh {
@@ -31,13 +32,12 @@ struct BinaryStlView {
 // Coordinates are not checked here; see check_binary_stl_finite().
 std::optional<BinaryStlView> binary_stl_view(std::span<const char> bytes, const std::string& name);
 
-// The three vertices of one 50-byte record, float32 little-endian widened to double. The normal
-// is ignored: the vertex order is the truth.
-inline void stl_triangle(const unsigned char* record, Vec3d out[3]) {
+// The nine vertex coordinates of one 50-byte record, float32 little-endian, in the host's order.
+// The normal is ignored: the vertex order is the truth.
+inline void stl_record_floats(const unsigned char* record, float f[9]) {
   static_assert(sizeof(float) == 4);
-  float f[9];
   if constexpr (std::endian::native == std::endian::little) {
-    std::memcpy(f, record + 12, sizeof f);
+    std::memcpy(f, record + 12, 9 * sizeof(float));
   } else {
     for (int i = 0; i < 9; ++i) {
       std::uint32_t u;
@@ -46,7 +46,55 @@ inline void stl_triangle(const unsigned char* record, Vec3d out[3]) {
       std::memcpy(&f[i], &u, 4);
     }
   }
+}
+
+// The three vertices of one record, widened to double.
+inline void stl_triangle(const unsigned char* record, Vec3d out[3]) {
+  float f[9];
+  stl_record_floats(record, f);
   for (int k = 0; k < 3; ++k) out[k] = {f[3 * k], f[3 * k + 1], f[3 * k + 2]};
+}
+
+// The vertices of four consecutive records, lane j holding record j (as stl_triangle reads it).
+inline void stl_triangles4(const unsigned char* records, Vec3<Double4> out[3]) {
+  using Pair = Double4::Pair;
+  if constexpr (std::endian::native == std::endian::little) {
+    // Each record's nine floats as five widened pairs (f0 f1) (f2 f3) (f4 f5) (f6 f7) (f7 f8),
+    // from three 16-byte loads inside the record (bytes 12–28, 28–44, 32–48 of its 50).
+    using Float4 = float __attribute__((vector_size(16)));
+    Pair p[4][5];
+    for (int r = 0; r < 4; ++r) {
+      const unsigned char* rec = records + stl_record_bytes * r;
+      Float4 a, b, c8;
+      std::memcpy(&a, rec + 12, 16);
+      std::memcpy(&b, rec + 28, 16);
+      std::memcpy(&c8, rec + 32, 16);
+      p[r][0] = __builtin_convertvector(__builtin_shufflevector(a, a, 0, 1), Pair);
+      p[r][1] = __builtin_convertvector(__builtin_shufflevector(a, a, 2, 3), Pair);
+      p[r][2] = __builtin_convertvector(__builtin_shufflevector(b, b, 0, 1), Pair);
+      p[r][3] = __builtin_convertvector(__builtin_shufflevector(b, b, 2, 3), Pair);
+      p[r][4] = __builtin_convertvector(__builtin_shufflevector(c8, c8, 2, 3), Pair);
+    }
+    // Coordinate j of records (0, 1) and (2, 3): element j % 2 of pair j / 2 (j = 8: element 1 of
+    // pair 4), gathered across the records.
+    Double4 coord[9];
+    for (int j = 0; j < 9; ++j) {
+      const int q = j < 8 ? j / 2 : 4;
+      const bool second = j < 8 ? (j % 2 == 1) : true;
+      coord[j] = second ? Double4(__builtin_shufflevector(p[0][q], p[1][q], 1, 3),
+                                  __builtin_shufflevector(p[2][q], p[3][q], 1, 3))
+                        : Double4(__builtin_shufflevector(p[0][q], p[1][q], 0, 2),
+                                  __builtin_shufflevector(p[2][q], p[3][q], 0, 2));
+    }
+    for (int k = 0; k < 3; ++k) out[k] = {coord[3 * k], coord[3 * k + 1], coord[3 * k + 2]};
+  } else {
+    float f[4][9];
+    for (int j = 0; j < 4; ++j) stl_record_floats(records + stl_record_bytes * j, f[j]);
+    for (int k = 0; k < 3; ++k)
+      out[k] = {Double4(f[0][3 * k], f[1][3 * k], f[2][3 * k], f[3][3 * k]),
+                Double4(f[0][3 * k + 1], f[1][3 * k + 1], f[2][3 * k + 1], f[3][3 * k + 1]),
+                Double4(f[0][3 * k + 2], f[1][3 * k + 2], f[2][3 * k + 2], f[3][3 * k + 2])};
+  }
 }
 
 // Throws InputError (byte offset of the first bad float) when any vertex coordinate of the view is

@@ -12,7 +12,8 @@ namespace pgamesh::pga3 {
 /// ‖p‖ = |normal|.
 template <class T>
 T norm(const Plane<T>& p) {
-  return std::sqrt(p.e1 * p.e1 + p.e2 * p.e2 + p.e3 * p.e3);
+  using std::sqrt;  // and sqrt(Double4) by argument-dependent lookup
+  return sqrt(p.e1 * p.e1 + p.e2 * p.e2 + p.e3 * p.e3);
 }
 /// ‖p‖∞ = |d|.
 template <class T>
