@@ -48,7 +48,7 @@ void add_records(LanedSums<>& lanes, const unsigned char* records, std::size_t b
     stl_triangles4(r, v);
     add_triangle(four, v[0] - ref4, v[1] - ref4, v[2] - ref4);
   }
-  for (std::size_t j = 0; j < sum_lanes; ++j) lanes.lane[j] = lane(four, static_cast<int>(j));
+  set_lanes(lanes, four);
   for (; f < end; ++f, r += stl_record_bytes) {
     Vec3d v[3];
     stl_triangle(r, v);

@@ -55,16 +55,9 @@ TEST(LaneSums, Double4LanesAreTheDoubleFormulasBitForBit) {
     for (auto& face : v)
       for (Vec3d& p : face) p = random_point(rng);
     if (group % 7 == 0) v[1][2] = v[1][1];  // a collapsed triangle: zero carrier, zero volume
-    Vec3<Double4> a, b, c;
-    a = {Double4(v[0][0].x, v[1][0].x, v[2][0].x, v[3][0].x),
-         Double4(v[0][0].y, v[1][0].y, v[2][0].y, v[3][0].y),
-         Double4(v[0][0].z, v[1][0].z, v[2][0].z, v[3][0].z)};
-    b = {Double4(v[0][1].x, v[1][1].x, v[2][1].x, v[3][1].x),
-         Double4(v[0][1].y, v[1][1].y, v[2][1].y, v[3][1].y),
-         Double4(v[0][1].z, v[1][1].z, v[2][1].z, v[3][1].z)};
-    c = {Double4(v[0][2].x, v[1][2].x, v[2][2].x, v[3][2].x),
-         Double4(v[0][2].y, v[1][2].y, v[2][2].y, v[3][2].y),
-         Double4(v[0][2].z, v[1][2].z, v[2][2].z, v[3][2].z)};
+    const Vec3<Double4> a = lanes(v[0][0], v[1][0], v[2][0], v[3][0]);
+    const Vec3<Double4> b = lanes(v[0][1], v[1][1], v[2][1], v[3][1]);
+    const Vec3<Double4> c = lanes(v[0][2], v[1][2], v[2][2], v[3][2]);
     const Vec3d ref{0.25, -3, 7};
     const Vec3<Double4> ref4{ref.x, ref.y, ref.z};
     Double4 norm4;

@@ -9,6 +9,8 @@
 
 #include <cmath>
 
+#include "pgamesh/algebra/vec3.hpp"
+
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
@@ -45,5 +47,11 @@ struct Double4 {
 #endif
   }
 };
+
+// Four points side by side: lane j of each coordinate is v_j's.
+inline Vec3<Double4> lanes(Vec3<double> v0, Vec3<double> v1, Vec3<double> v2, Vec3<double> v3) {
+  return {Double4(v0.x, v1.x, v2.x, v3.x), Double4(v0.y, v1.y, v2.y, v3.y),
+          Double4(v0.z, v1.z, v2.z, v3.z)};
+}
 
 }  // namespace pgamesh

@@ -44,6 +44,12 @@ struct LanedSums {
   }
 };
 
+// Sets the lanes of a chunk to the sums of its first faces summed four at a time (lane j of `four`
+// holding faces j, j + 4, …), before its last few faces are added one by one.
+inline void set_lanes(LanedSums<>& lanes, const BasicBoundarySums<Double4>& four) {
+  for (std::size_t j = 0; j < sum_lanes; ++j) lanes.lane[j] = lane(four, static_cast<int>(j));
+}
+
 // The number of threads to use when the caller asks for 0 ("all"): the hardware concurrency.
 inline unsigned resolve_threads(unsigned requested) {
   if (requested) return requested;
