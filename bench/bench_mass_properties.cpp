@@ -10,6 +10,8 @@
 #include "pgamesh/mesh/mass_properties.hpp"
 #include "pgamesh/mesh/primitives.hpp"
 #include "pgamesh/mesh/stl_mass_properties.hpp"
+#include "pgamesh/mesh/triangle_topology.hpp"
+#include "pgamesh/mesh/welded_triangles.hpp"
 
 using namespace pgamesh;
 
@@ -86,6 +88,32 @@ void BM_StreamedStl(benchmark::State& state) {
                          benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 BENCHMARK(BM_StreamedStl)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The exact weld of the binary STL records (welded_triangles.hpp), both cores: ns per triangle.
+void BM_WeldBinaryStl(benchmark::State& state) {
+  static const std::vector<char> bytes = stl_of(sphere(8));
+  const auto view = binary_stl_view(bytes, "bench.stl");
+  for (auto _ : state) benchmark::DoNotOptimize(weld_binary_stl(*view, "bench.stl"));
+  state.counters["ns_per_triangle"] =
+      benchmark::Counter(static_cast<double>(state.iterations() * view->count),
+                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(BM_WeldBinaryStl)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The topology and mass pass on the welded triangles (triangle_topology.hpp) that `pgamesh props`
+// runs after the weld: face sums, edges, loops, orientation, components.
+void BM_WeldedTriangleProps(benchmark::State& state) {
+  static const std::vector<char> bytes = stl_of(sphere(8));
+  const auto view = binary_stl_view(bytes, "bench.stl");
+  const WeldedTriangles welded = weld_binary_stl(*view, "bench.stl");
+  for (auto _ : state)
+    benchmark::DoNotOptimize(
+        analyze_welded_triangles(welded, Vec3d{0, 0, 0}, MassOptions{}, TopologyOptions{}, true));
+  state.counters["ns_per_triangle"] =
+      benchmark::Counter(static_cast<double>(state.iterations() * view->count),
+                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(BM_WeldedTriangleProps)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
 

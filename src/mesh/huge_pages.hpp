@@ -1,16 +1,27 @@
-// Internal: transparent huge pages for the weld's hash tables (weld_table.hpp: tens of MB, probed
-// at random). Probing such an array misses the TLB on nearly every access with 4 KiB pages; with
-// 2 MiB pages a 64 MiB table needs only 32 TLB entries. Measured on the 2-core VM (5·10^6-triangle
-// STL): the weld's CPU time drops by about a fifth. Huge pages are not used for the other arrays:
-// there the kernel's zeroing of fresh 2 MiB pages cost more CPU than the TLB misses saved. THP is
-// often in `madvise` mode
-// (/sys/kernel/mm/transparent_hugepage/enabled), where only ranges marked MADV_HUGEPAGE get them.
+// Internal: transparent huge pages for the large arrays of the weld and the topology pass (the
+// weld's hash tables, its keys, the edge pass's buckets and union–find: megabytes to hundreds of
+// megabytes, each written in full or probed at random).
+//
+// Two costs of 4 KiB pages, both measured on the 2-core VMs this project runs on:
+// * TLB misses: probing a table of tens of MB misses the TLB on nearly every access; with 2 MiB
+//   pages a 64 MiB table needs 32 TLB entries (5·10^6-triangle STL: the weld's CPU time −20 %).
+// * Page faults: every first touch of a fresh 4 KiB page is a fault, and on a paravirtualised
+//   guest each one exits to the hypervisor. On the 2026-11-25 VM (AMD EPYC, kernel 6.18) a 12 MB
+//   array took 35–53 ms to fault in with 4 KiB pages (about 15 µs a page) and 1 ms with 2 MiB
+//   pages, where the kernel zeroes each huge page in one fault.
+//
+// Huge pages apply only to whole 2 MiB-aligned ranges: HugePageAllocator gives the large blocks
+// that alignment, so that no array keeps a 4 KiB-paged head and tail. THP is often in `madvise`
+// mode (/sys/kernel/mm/transparent_hugepage/enabled), where only ranges marked MADV_HUGEPAGE get
+// huge pages; without THP everything works on 4 KiB pages.
 #pragma once
 
 #include <sys/mman.h>
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
+#include <new>
 #include <vector>
 
 namespace pgamesh::detail {
@@ -29,6 +40,48 @@ inline void advise_huge_pages(const void* data, std::size_t bytes) {
   (void)bytes;
 #endif
 }
+
+inline constexpr std::size_t huge_page_bytes = std::size_t{1} << 21;
+
+// A std::allocator whose blocks of at least half a huge page start on a huge-page boundary, span
+// whole huge pages and are advised MADV_HUGEPAGE before their first touch (a block of 1–2 MiB
+// costs at most twice its size in memory, and one fault instead of up to 512). Smaller blocks are
+// std::allocator's.
+template <class T>
+struct HugePageAllocator {
+  using value_type = T;
+
+  HugePageAllocator() = default;
+  template <class U>
+  HugePageAllocator(const HugePageAllocator<U>&) noexcept {}
+
+  T* allocate(std::size_t n) {
+    if (n > static_cast<std::size_t>(-1) / sizeof(T)) throw std::bad_array_new_length();
+    if (n * sizeof(T) < huge_page_bytes / 2) return std::allocator<T>().allocate(n);
+    const std::size_t bytes = whole_huge_pages(n);
+    void* p = ::operator new (bytes, std::align_val_t{huge_page_bytes});
+    advise_huge_pages(p, bytes);
+    return static_cast<T*>(p);
+  }
+
+  void deallocate(T* p, std::size_t n) noexcept {
+    if (n * sizeof(T) < huge_page_bytes / 2) return std::allocator<T>().deallocate(p, n);
+    ::operator delete (p, whole_huge_pages(n), std::align_val_t{huge_page_bytes});
+  }
+
+  template <class U>
+  bool operator==(const HugePageAllocator<U>&) const noexcept {
+    return true;
+  }
+
+ private:
+  static std::size_t whole_huge_pages(std::size_t n) {
+    return (n * sizeof(T) + huge_page_bytes - 1) & ~(huge_page_bytes - 1);
+  }
+};
+
+template <class T>
+using HugeVector = std::vector<T, HugePageAllocator<T>>;
 
 // v.reserve(n) with huge pages advised for the new buffer. A buffer this large comes from a fresh
 // mmap (glibc's malloc maps allocations above its threshold), so its pages are still untouched.

@@ -381,7 +381,8 @@ class PlyPass {
     passes = ranges.size();
     parent_ = detail::uninitialized_array<std::uint32_t>(ply_.face_count);
     for (std::size_t f = 0; f < ply_.face_count; ++f) parent_[f] = static_cast<std::uint32_t>(f);
-    const std::unique_ptr<HalfEdge[]> bucket = detail::uninitialized_array<HalfEdge>(largest);
+    const detail::UninitializedArray<HalfEdge> bucket =
+        detail::uninitialized_array<HalfEdge>(largest);
     for (const auto& range : ranges) {
       const std::uint32_t a = range.first, b = range.second;  // a lambda cannot capture a binding
       const std::uint32_t base = start_[a], width = b - a;
@@ -442,9 +443,10 @@ class PlyPass {
   const PlainPly& ply_;
   CoordinateWeld<Bits>& weld_;
   bool release_pages_;
-  std::vector<std::uint32_t> start_;         // half-edges per lower end, then the buckets' starts
-  std::vector<bool> collapsed_;              // per face
-  std::unique_ptr<std::uint32_t[]> parent_;  // union–find of the faces, then their components
+  std::vector<std::uint32_t> start_;  // half-edges per lower end, then the buckets' starts
+  std::vector<bool> collapsed_;       // per face
+  // Union–find of the faces, then their components.
+  detail::UninitializedArray<std::uint32_t> parent_;
 };
 
 // Half-edges per range when the caller leaves it to the file's size: their records may take a

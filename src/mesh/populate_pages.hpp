@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "huge_pages.hpp"
 #include "page_release.hpp"
 #include "two_threads.hpp"
 
@@ -39,11 +40,13 @@ inline void populate_pages(void* data, std::size_t bytes, bool parallel) {
 }
 
 // v.resize(n) of an empty vector of trivial values, its pages populated on two threads first
-// when the array is large (see above).
+// when the array is large (see above). The vector is a plain std::vector (the arrays of
+// WeldedTriangles), so only its 2 MiB-aligned interior can have huge pages (huge_pages.hpp).
 template <class T>
 void resize_populated(std::vector<T>& v, std::size_t n) {
   constexpr std::size_t parallel_bytes = std::size_t{1} << 22;  // below, a thread costs more
   v.reserve(n);
+  advise_huge_pages(v.data(), n * sizeof(T));
   if (n * sizeof(T) >= parallel_bytes) populate_pages(v.data(), n * sizeof(T), true);
   v.resize(n);
 }

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "edge_group.hpp"
+#include "huge_pages.hpp"
 #include "pgamesh/geometry/chunked_sums.hpp"
 #include "pgamesh/mesh/boundary_loops.hpp"
 #include "topology_parts.hpp"
@@ -25,7 +26,7 @@ using detail::OddEdge;
 struct EdgePass {
   std::size_t edges = 0, collapsed_faces = 0;
   // Face → component (numbered by lowest face) or no_edge, for the faces of the mesh.
-  std::unique_ptr<std::uint32_t[]> component;
+  detail::UninitializedArray<std::uint32_t> component;
   std::vector<ComponentSummary> components;                         // first_face and faces
   std::vector<OddEdge> odd;                                         // in edge order
   std::vector<std::uint32_t> sides;                                 // boundary half-edges
@@ -90,7 +91,7 @@ EdgePass edge_pass(const WeldedTriangles& mesh, bool parallel) {
   // Counting sort of the half-edges of non-collapsed triangles by their lower end, each half of
   // the faces counted into its own array; within a bucket the first half's half-edges come
   // first, so every bucket ascends.
-  std::vector<std::uint32_t> start, second_cursor;  // counts first, then fill cursors
+  detail::HugeVector<std::uint32_t> start, second_cursor;  // counts first, then fill cursors
   std::size_t collapsed_faces[2] = {0, 0};
   auto count = [&](int part, std::uint32_t* counts) {
     const std::size_t begin = part == 0 ? 0 : face_split, end = part == 0 ? face_split : face_count;
@@ -121,7 +122,8 @@ EdgePass edge_pass(const WeldedTriangles& mesh, bool parallel) {
     second_cursor[v] = total + first;
     total += first + second;
   }
-  std::unique_ptr<std::uint32_t[]> bucket = detail::uninitialized_array<std::uint32_t>(total);
+  detail::UninitializedArray<std::uint32_t> bucket =
+      detail::uninitialized_array<std::uint32_t>(total);
   auto fill = [&](int part, std::uint32_t* cursor) {
     const std::size_t begin = part == 0 ? 0 : face_split, end = part == 0 ? face_split : face_count;
     for (std::size_t f = begin; f < end; ++f) {
@@ -135,12 +137,13 @@ EdgePass edge_pass(const WeldedTriangles& mesh, bool parallel) {
   // The second cursor has stopped at each bucket's end, the next one's start.
   start[0] = 0;
   for (std::size_t v = 0; v < vertex_count; ++v) start[v + 1] = second_cursor[v];
-  std::vector<std::uint32_t>().swap(second_cursor);  // `= {}` would keep its capacity
+  detail::HugeVector<std::uint32_t>().swap(second_cursor);  // `= {}` would keep its capacity
 
   // The union–find starts with every face its own set. Not zero-filled first, and each half set
   // (and its pages faulted in) on a thread of its own: zero-filled and set on one thread, between
   // the fill and the grouping, it took 3–4 ms at 10^6 triangles with the other core idle.
-  std::unique_ptr<std::uint32_t[]> parent = detail::uninitialized_array<std::uint32_t>(face_count);
+  detail::UninitializedArray<std::uint32_t> parent =
+      detail::uninitialized_array<std::uint32_t>(face_count);
   auto singletons = [&](std::size_t begin, std::size_t end) {
     for (std::size_t f = begin; f < end; ++f) parent[f] = static_cast<std::uint32_t>(f);
   };
@@ -161,7 +164,7 @@ EdgePass edge_pass(const WeldedTriangles& mesh, bool parallel) {
                     static_cast<std::uint32_t>(vertex_count), parent.get(), high);
       });
   bucket.reset();
-  std::vector<std::uint32_t>().swap(start);
+  detail::HugeVector<std::uint32_t>().swap(start);
   out.edges = low.edges + high.edges;
   out.odd = std::move(low.odd);
   out.odd.insert(out.odd.end(), high.odd.begin(), high.odd.end());

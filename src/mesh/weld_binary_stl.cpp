@@ -6,6 +6,7 @@
 #include <bit>
 #include <cstring>
 
+#include "huge_pages.hpp"
 #include "page_release.hpp"
 #include "pgamesh/input_error.hpp"
 #include "pgamesh/mesh/welded_triangles.hpp"
@@ -49,7 +50,7 @@ using KeyTable = detail::WeldTable<Key, detail::Float32KeyTraits>;
 // its first occurrence.
 struct RangeWeld {
   KeyTable table{0};
-  std::vector<Key> keys;
+  detail::HugeVector<Key> keys;
   std::vector<std::uint32_t> first_vertex;
   bool finite = true;
 };
@@ -60,7 +61,7 @@ void weld_range(const BinaryStlView& view, std::size_t first, std::size_t last,
   // A closed STL shares each vertex among about six corners: start for n / 4 classes and grow.
   out.table = KeyTable(n / 4 + 16);
   out.keys.reserve(n / 4 + 16);
-  out.first_vertex.reserve(n / 4 + 16);
+  detail::reserve_huge(out.first_vertex, n / 4 + 16);
 
   // The table is larger than the caches: hash a few vertices ahead and prefetch their slots, and
   // half as far ahead, their first slot's key (a probe's two memory accesses, both hidden).
@@ -99,7 +100,7 @@ void weld_range(const BinaryStlView& view, std::size_t first, std::size_t last,
 
 // found[j] = the id of keys[j] in the table of `low`, or KeyTable::none, for j in [begin, end).
 // Hashes a few keys ahead with their slots and keys prefetched, as in the weld.
-void find_in_range(const RangeWeld& low, const std::vector<Key>& keys, std::size_t begin,
+void find_in_range(const RangeWeld& low, const detail::HugeVector<Key>& keys, std::size_t begin,
                    std::size_t end, std::uint32_t* found) {
   constexpr std::size_t ahead = 16, key_ahead = 8;
   std::array<std::uint64_t, 32> ring{};
@@ -139,7 +140,7 @@ WeldedTriangles weld_binary_stl(const BinaryStlView& view, const std::string& na
   // then resized to the class count): reserved for every corner — address space only, pages are
   // touched as the array fills — so that the resize neither copies them into a fresh array on one
   // thread (1.5 ms at 10^6 triangles) nor faults in a second array.
-  low.first_vertex.reserve(n);
+  detail::reserve_huge(low.first_vertex, n);
   const std::size_t split = view.count >= 2 * records_per_thread ? 3 * (view.count / 2) : n;
   detail::run_both(
       split != n, [&] { weld_range(view, 0, split, w.corners.data(), release_records, low); },
@@ -153,7 +154,7 @@ WeldedTriangles weld_binary_stl(const BinaryStlView& view, const std::string& na
   // the first half's table, each half of them on a thread (the table is only read), and those not
   // found are numbered after the first half's in their own first-occurrence order.
   const std::size_t first_classes = low.keys.size();
-  std::vector<std::uint32_t> global;  // second half's class → welded id
+  detail::HugeVector<std::uint32_t> global;  // second half's class → welded id
   if (split != n) {
     const std::size_t m = high.keys.size();
     global.resize(m);

@@ -38,8 +38,7 @@ class WeldTable {
   explicit WeldTable(std::size_t expected) {
     std::size_t cap = 64;
     while (cap < 2 * expected) cap *= 2;
-    reserve_huge(slots_, cap);  // probed at random: huge pages spare the TLB misses
-    slots_.assign(cap, 0);
+    slots_.assign(cap, 0);  // probed at random: huge pages spare the TLB misses
     mask_ = cap - 1;
   }
 
@@ -96,9 +95,7 @@ class WeldTable {
  private:
   template <class Keys>
   void grow(const Keys& keys) {
-    std::vector<std::uint64_t> old;
-    reserve_huge(old, slots_.size() * 2);
-    old.assign(slots_.size() * 2, 0);
+    HugeVector<std::uint64_t> old(slots_.size() * 2, 0);
     old.swap(slots_);
     mask_ = slots_.size() - 1;
     for (std::size_t id = 0; id < keys.size(); ++id) {
@@ -109,7 +106,7 @@ class WeldTable {
     }
   }
 
-  std::vector<std::uint64_t> slots_;
+  HugeVector<std::uint64_t> slots_;
   std::size_t mask_ = 0;
 };
 
