@@ -131,16 +131,19 @@ namespace {
 // properties are streamed from the records; with exact-weld topology it is welded straight from
 // the records (welded_triangles.hpp), and both the mass properties and the topology come from the
 // welded triangles — the same figures as reading the mesh first, in a quarter of the memory. With
-// `release_records` (bytes of a read-only file mapping) the weld gives the records' pages back.
+// `release_records` (bytes of a read-only file mapping) the readers give the pages back as they
+// pass; `file` is that mapping's open descriptor (or −1), from which the binary STL passes read
+// the records instead of touching the mapping (BinaryStlView::file).
 PropsReport props_of(std::span<const char> bytes, const std::string& name,
-                     const PropsOptions& options, bool release_records) {
+                     const PropsOptions& options, bool release_records, int file) {
   const bool stl_allowed = options.format == MeshFormat::unknown ||
                            options.format == MeshFormat::stl_binary ||
                            options.format == MeshFormat::stl_ascii;
   const bool weld_from_records = options.topology && options.topology_options.weld_tolerance == 0 &&
                                  options.format != MeshFormat::stl_ascii;
   if ((!options.topology || weld_from_records) && stl_allowed) {
-    if (const auto view = binary_stl_view(bytes, name)) {
+    if (auto view = binary_stl_view(bytes, name)) {
+      view->file = file;
       PropsReport r;
       r.file = name;
       r.format = MeshFormat::stl_binary;
@@ -195,7 +198,7 @@ PropsReport props_of(std::span<const char> bytes, const std::string& name,
 
 PropsReport props_of_bytes(std::span<const char> bytes, const std::string& name,
                            const PropsOptions& options) {
-  return props_of(bytes, name, options, false);
+  return props_of(bytes, name, options, false, -1);
 }
 
 PropsReport props_of_file(const std::string& path, const PropsOptions& options) {
@@ -203,7 +206,7 @@ PropsReport props_of_file(const std::string& path, const PropsOptions& options) 
   // MappedFile maps regular files; standard input and pipes are read into a buffer of their own.
   std::error_code ec;
   const bool mapped = path != "-" && std::filesystem::is_regular_file(path, ec);
-  return props_of(file.bytes(), path, options, mapped);
+  return props_of(file.bytes(), path, options, mapped, file.descriptor());
 }
 
 }  // namespace pgamesh::cli

@@ -80,12 +80,15 @@ MappedFile MappedFile::open(const std::string& path) {
   }
   void* p = ::mmap(nullptr, size, PROT_READ, MAP_PRIVATE, fd, 0);
   const int e = errno;
-  ::close(fd);  // the mapping keeps the file alive
-  if (p == MAP_FAILED) fail_open(path, std::string("cannot map: ") + std::strerror(e));
+  if (p == MAP_FAILED) {
+    ::close(fd);
+    fail_open(path, std::string("cannot map: ") + std::strerror(e));
+  }
   ::madvise(p, size, MADV_SEQUENTIAL);
   f.data_ = static_cast<const char*>(p);
   f.size_ = size;
   f.mapped_ = true;
+  f.descriptor_ = fd;  // kept open for pread (descriptor())
   return f;
 }
 
@@ -99,6 +102,7 @@ MappedFile& MappedFile::operator=(MappedFile&& other) noexcept {
   path_ = std::move(other.path_);
   owned_ = std::move(other.owned_);
   mapped_ = std::exchange(other.mapped_, false);
+  descriptor_ = std::exchange(other.descriptor_, -1);
   size_ = std::exchange(other.size_, 0);
   const char* d = std::exchange(other.data_, nullptr);
   data_ = mapped_ ? d : owned_.data();
@@ -111,6 +115,8 @@ MappedFile::~MappedFile() {
 
 void MappedFile::release() noexcept {
   if (mapped_ && data_) ::munmap(const_cast<char*>(data_), size_);
+  if (descriptor_ >= 0) ::close(descriptor_);
+  descriptor_ = -1;
   data_ = nullptr;
   size_ = 0;
   mapped_ = false;

@@ -7,6 +7,7 @@
 #include "pgamesh/mesh/read_mesh.hpp"
 #include "pgamesh/mesh/stl_binary.hpp"
 #include "readers.hpp"
+#include "stl_record_blocks.hpp"
 #include "text_cursor.hpp"
 
 namespace pgamesh {
@@ -38,20 +39,22 @@ std::optional<BinaryStlView> binary_stl_view(std::span<const char> bytes, const 
 }
 
 void check_binary_stl_finite(const BinaryStlView& view, const std::string& name) {
-  for (std::uint64_t i = 0; i < view.count; ++i) {
-    const unsigned char* r = view.records + stl_record_bytes * i;
-    Vec3d v[3];
-    stl_triangle(r, v);
-    for (int k = 0; k < 3; ++k)
-      for (int j = 0; j < 3; ++j)
-        if (!std::isfinite(v[k][j]))
-          throw InputError(
-              name,
-              detail::byte_position(stl_header_bytes + stl_record_bytes * i + 12 +
-                                    12 * static_cast<unsigned>(k) + 4 * static_cast<unsigned>(j)),
-              "non-finite coordinate (NaN or infinity) in triangle " + std::to_string(i + 1) +
-                  ", vertex " + std::to_string(k + 1));
-  }
+  detail::for_record_blocks(
+      view, 0, view.count, name, [&](const unsigned char* r, std::uint64_t b, std::uint64_t e) {
+        for (std::uint64_t i = b; i < e; ++i, r += stl_record_bytes) {
+          Vec3d v[3];
+          stl_triangle(r, v);
+          for (int k = 0; k < 3; ++k)
+            for (int j = 0; j < 3; ++j)
+              if (!std::isfinite(v[k][j]))
+                throw InputError(name,
+                                 detail::byte_position(stl_header_bytes + stl_record_bytes * i +
+                                                       12 + 12 * static_cast<unsigned>(k) +
+                                                       4 * static_cast<unsigned>(j)),
+                                 "non-finite coordinate (NaN or infinity) in triangle " +
+                                     std::to_string(i + 1) + ", vertex " + std::to_string(k + 1));
+        }
+      });
 }
 
 namespace detail {

@@ -11,14 +11,13 @@
 #include "pgamesh/input_error.hpp"
 #include "pgamesh/mesh/welded_triangles.hpp"
 #include "populate_pages.hpp"
+#include "stl_record_blocks.hpp"
 #include "two_threads.hpp"
 #include "weld_table.hpp"
 
 namespace pgamesh {
 
 namespace {
-
-using detail::release_pages;
 
 using Key = detail::Float32Key;
 
@@ -55,8 +54,8 @@ struct RangeWeld {
   bool finite = true;
 };
 
-void weld_range(const BinaryStlView& view, std::size_t first, std::size_t last,
-                std::uint32_t* corners, bool release_records, RangeWeld& out) {
+void weld_range(const BinaryStlView& view, const std::string& name, std::size_t first,
+                std::size_t last, std::uint32_t* corners, bool release_records, RangeWeld& out) {
   const std::size_t n = last - first;
   // A closed STL shares each vertex among about six corners: start for n / 4 classes and grow.
   out.table = KeyTable(n / 4 + 16);
@@ -64,38 +63,37 @@ void weld_range(const BinaryStlView& view, std::size_t first, std::size_t last,
   detail::reserve_huge(out.first_vertex, n / 4 + 16);
 
   // The table is larger than the caches: hash a few vertices ahead and prefetch their slots, and
-  // half as far ahead, their first slot's key (a probe's two memory accesses, both hidden).
+  // half as far ahead, their first slot's key (a probe's two memory accesses, both hidden). The
+  // records come in blocks (stl_record_blocks.hpp); the look-ahead stays within a block.
   constexpr std::size_t ahead = 16, key_ahead = 8;
   std::array<std::uint64_t, 32> ring{};
   std::array<Key, 32> ring_key{};
-  auto record = [&](std::size_t i) { return view.records + stl_record_bytes * (i / 3); };
-  auto load = [&](std::size_t i) {
-    out.finite &= vertex_key(record(i), static_cast<int>(i % 3), ring_key[i & 31]);
-    ring[i & 31] = detail::Float32KeyTraits::hash(ring_key[i & 31]);
-  };
-  for (std::size_t i = first; i < std::min(first + ahead, last); ++i) load(i);
-  constexpr std::size_t release_step = std::size_t{1} << 22;  // bytes of records per madvise
-  const unsigned char* released = record(first);
-  for (std::size_t i = first; i < last; ++i) {
-    if (i + ahead < last) {
-      load(i + ahead);
-      __builtin_prefetch(out.table.slot_address(ring[(i + ahead) & 31]));
-    }
-    if (i + key_ahead < last) out.table.prefetch_key(ring[(i + key_ahead) & 31], out.keys);
-    bool inserted = false;
-    corners[i - first] =
-        out.table.find_or_insert(ring_key[i & 31], ring[i & 31], out.keys, inserted);
-    if (inserted) out.first_vertex.push_back(static_cast<std::uint32_t>(i));
-    if (release_records && i % 3 == 2) {
-      // Records up to the one `ahead` vertices on have been read; release whole steps behind.
-      const unsigned char* done = record(i);
-      if (static_cast<std::size_t>(done - released) >= release_step) {
-        release_pages(released, done);
-        released = done;
-      }
-    }
-  }
-  if (release_records) release_pages(released, record(last - 1) + stl_record_bytes);
+  detail::PageRelease release(view.records + stl_record_bytes * (first / 3),
+                              release_records && view.file < 0);
+  detail::for_record_blocks(
+      view, first / 3, last / 3, name,
+      [&](const unsigned char* records, std::uint64_t record_begin, std::uint64_t record_end) {
+        const std::size_t begin = 3 * record_begin, end = 3 * record_end;
+        auto load = [&](std::size_t i) {
+          out.finite &= vertex_key(records + stl_record_bytes * (i / 3 - record_begin),
+                                   static_cast<int>(i % 3), ring_key[i & 31]);
+          ring[i & 31] = detail::Float32KeyTraits::hash(ring_key[i & 31]);
+        };
+        for (std::size_t i = begin; i < std::min(begin + ahead, end); ++i) load(i);
+        for (std::size_t i = begin; i < end; ++i) {
+          if (i + ahead < end) {
+            load(i + ahead);
+            __builtin_prefetch(out.table.slot_address(ring[(i + ahead) & 31]));
+          }
+          if (i + key_ahead < end) out.table.prefetch_key(ring[(i + key_ahead) & 31], out.keys);
+          bool inserted = false;
+          corners[i - first] =
+              out.table.find_or_insert(ring_key[i & 31], ring[i & 31], out.keys, inserted);
+          if (inserted) out.first_vertex.push_back(static_cast<std::uint32_t>(i));
+        }
+        release.passed(view.records + stl_record_bytes * record_end);
+      });
+  release.finish(view.records + stl_record_bytes * (last / 3));
 }
 
 // found[j] = the id of keys[j] in the table of `low`, or KeyTable::none, for j in [begin, end).
@@ -143,9 +141,10 @@ WeldedTriangles weld_binary_stl(const BinaryStlView& view, const std::string& na
   detail::reserve_huge(low.first_vertex, n);
   const std::size_t split = view.count >= 2 * records_per_thread ? 3 * (view.count / 2) : n;
   detail::run_both(
-      split != n, [&] { weld_range(view, 0, split, w.corners.data(), release_records, low); },
+      split != n, [&] { weld_range(view, name, 0, split, w.corners.data(), release_records, low); },
       [&] {
-        if (split != n) weld_range(view, split, n, w.corners.data() + split, release_records, high);
+        if (split != n)
+          weld_range(view, name, split, n, w.corners.data() + split, release_records, high);
       });
   // A NaN or infinity: name the first one, with its byte offset (throws).
   if (!low.finite || !high.finite) check_binary_stl_finite(view, name);

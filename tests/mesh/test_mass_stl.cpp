@@ -1,8 +1,10 @@
 // The streamed binary STL path: same figures as reading the mesh first, thread-count independent,
 // errors with byte offsets for non-finite coordinates, the float32 far-from-origin warning.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 #include "pgamesh/input_error.hpp"
@@ -10,8 +12,10 @@
 #include "pgamesh/mesh/read_mesh.hpp"
 #include "pgamesh/mesh/stl_mass_properties.hpp"
 #include "support/golden.hpp"
+#include "support/same_topology.hpp"
 #include "support/solids.hpp"
 #include "support/stl_bytes.hpp"
+#include "support/temp_file.hpp"
 
 using namespace pgamesh;
 using namespace pgamesh::test;
@@ -112,4 +116,62 @@ TEST(MassStl, IrregularTetrahedronHasVolumeOne) {
   EXPECT_NEAR(p.inertia_origin[0][1], -xy, 1e-15);
   EXPECT_NEAR(p.inertia_origin[1][2], -yz, 1e-15);
   EXPECT_NEAR(p.inertia_origin[0][2], -zx, 1e-15);
+}
+
+// A view whose records are read from its file (BinaryStlView::file) in blocks: the same bits as
+// the view of the bytes in memory, on one thread or two.
+TEST(MassStl, ReadingTheFileEqualsReadingMemory) {
+  Mesh m = uv_sphere(1, 120, 240);         // 57k triangles: 14 blocks of records, 4 chunks
+  m.corners.resize(m.corners.size() - 9);  // three triangles fewer: a count that is no
+  m.face_offsets.resize(m.face_offsets.size() - 3);  // multiple of the four lanes
+  const std::vector<char> bytes = binary_stl_bytes(m);
+  const TempFile file(".stl", {bytes.data(), bytes.size()});
+  const MappedFile mapped = MappedFile::open(file.path());
+  auto view = binary_stl_view(mapped.bytes(), file.path());
+  ASSERT_TRUE(view.has_value());
+  view->file = mapped.descriptor();
+  ASSERT_GE(view->file, 0);
+  for (unsigned threads : {1u, 2u}) {
+    MassOptions opt;
+    opt.threads = threads;
+    expect_same_mass(binary_stl_mass_properties(*view, file.path(), opt, true),
+                     streamed(bytes, threads));
+  }
+}
+
+TEST(MassStl, ReadingTheFileNamesTheNonFiniteByte) {
+  std::vector<char> bytes = binary_stl_bytes(uv_sphere(1, 40, 80));
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const std::size_t at = 84 + 50 * 5000 + 12 + 12 * 2 + 4;  // triangle 5001, vertex 3, y
+  std::memcpy(bytes.data() + at, &nan, 4);
+  const TempFile file(".stl", {bytes.data(), bytes.size()});
+  const MappedFile mapped = MappedFile::open(file.path());
+  auto view = binary_stl_view(mapped.bytes(), file.path());
+  ASSERT_TRUE(view.has_value());
+  view->file = mapped.descriptor();
+  try {
+    binary_stl_mass_properties(*view, file.path());
+    FAIL() << "no error for a NaN coordinate";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where().byte_offset, at);
+    EXPECT_NE(std::string(e.what()).find("triangle 5001, vertex 3"), std::string::npos) << e.what();
+  }
+}
+
+TEST(MassStl, AFileShortenedWhileReadIsAnErrorAtItsEnd) {
+  const std::vector<char> bytes = binary_stl_bytes(uv_sphere(1, 40, 80));
+  const TempFile file(".stl", {bytes.data(), bytes.size()});
+  const MappedFile mapped = MappedFile::open(file.path());
+  auto view = binary_stl_view(mapped.bytes(), file.path());
+  ASSERT_TRUE(view.has_value());
+  view->file = mapped.descriptor();
+  const std::size_t kept = 84 + 50 * 1000 + 7;
+  ASSERT_EQ(::truncate(file.path().c_str(), static_cast<off_t>(kept)), 0);
+  try {
+    binary_stl_mass_properties(*view, file.path());
+    FAIL() << "no error for a file shortened under the reader";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where().byte_offset, kept);
+    EXPECT_NE(std::string(e.what()).find("shortened"), std::string::npos) << e.what();
+  }
 }

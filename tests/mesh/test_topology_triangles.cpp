@@ -261,5 +261,26 @@ TEST(TopologyTriangles, StlWeldReleasingMappedPagesGivesTheSameResult) {
   EXPECT_EQ(r.components, 1u);
 }
 
+TEST(TopologyTriangles, StlWeldReadingTheFileGivesTheSameResult) {
+  // 81 920 triangles minus 3 (an open mesh): 20 blocks of records, the last one short, and a count
+  // that is no multiple of the four lanes.
+  Mesh m = icosphere(6, 1.0);
+  m.corners.resize(m.corners.size() - 9);            // three triangles fewer: a count that is no
+  m.face_offsets.resize(m.face_offsets.size() - 3);  // multiple of the four lanes
+  const std::vector<char> bytes = test::binary_stl_bytes(m);
+  const test::TempFile file(".stl", {bytes.data(), bytes.size()});
+  const auto memory = binary_stl_view(bytes, file.path());
+  ASSERT_TRUE(memory.has_value());
+  const WeldedTriangles kept = weld_binary_stl(*memory, file.path());
+  const MappedFile mapped = MappedFile::open(file.path());
+  ASSERT_GE(mapped.descriptor(), 0);
+  auto view = binary_stl_view(mapped.bytes(), file.path());
+  ASSERT_TRUE(view.has_value());
+  view->file = mapped.descriptor();
+  for (bool release : {false, true})
+    expect_same_weld(weld_binary_stl(*view, file.path(), release), kept);
+  EXPECT_EQ(kept.triangle_count(), m.face_count());
+}
+
 }  // namespace
 }  // namespace pgamesh

@@ -30,6 +30,9 @@ class MappedFile {
   // Whether bytes() is a read-only file mapping (whose pages may be released with madvise
   // MADV_DONTNEED and are read back from the file when touched again), not a buffer of our own.
   bool mapped() const { return mapped_; }
+  // The open read-only descriptor of a mapped file (closed with this object), or −1: for reading
+  // parts of the file with pread instead of touching the mapping's pages (BinaryStlView::file).
+  int descriptor() const { return descriptor_; }
 
  private:
   void release() noexcept;
@@ -38,6 +41,7 @@ class MappedFile {
   const char* data_ = nullptr;
   std::size_t size_ = 0;
   bool mapped_ = false;      // data_ is an mmap region to munmap
+  int descriptor_ = -1;      // the mapped file, open
   std::vector<char> owned_;  // contents of a pipe or stdin
 };
 

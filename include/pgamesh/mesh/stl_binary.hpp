@@ -22,6 +22,11 @@ inline constexpr std::size_t stl_record_bytes = 50;
 struct BinaryStlView {
   const unsigned char* records;  // first record (byte 84 of the file)
   std::uint64_t count;           // number of 50-byte records
+  // An open descriptor of the file these bytes map (MappedFile::descriptor()), or −1. When set,
+  // the streamed passes (binary_stl_mass_properties, weld_binary_stl) read the records with pread
+  // in blocks instead of touching the mapping: on a virtual machine each first touch of a mapped
+  // page can cost microseconds, a copy through a small buffer a fraction of that.
+  int file = -1;
 };
 
 // The binary-STL reading of `bytes`, decided by size arithmetic (84 + 50 × count == size), never

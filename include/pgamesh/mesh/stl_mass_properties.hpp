@@ -21,7 +21,8 @@ inline constexpr std::uint64_t stl_reference_samples = 4096;
 // not shared). Adds the float32 far-from-origin warning when it applies. Throws InputError naming
 // `name` and the byte offset of the first non-finite coordinate when there is one. With
 // `release_records` — only for records in a read-only file mapping — the pages of the records are
-// given back to the kernel as they are summed (madvise MADV_DONTNEED; they stay readable).
+// given back to the kernel as they are summed (madvise MADV_DONTNEED; they stay readable); a view
+// that reads its file (BinaryStlView::file) touches no mapped page and releases none.
 MassProperties binary_stl_mass_properties(const BinaryStlView& view, const std::string& name,
                                           const MassOptions& options = {},
                                           bool release_records = false);

@@ -55,7 +55,8 @@ WeldedTriangles weld_triangles(Mesh&& mesh, double tolerance = 0);
 // folded to +0 — the same classes, numbering and representatives as weld_map on the read mesh.
 // With `release_records`, the pages of records already welded are returned to the kernel as the
 // pass goes (madvise MADV_DONTNEED; only for a read-only file mapping, whose pages are re-read
-// from the file if touched again). Throws InputError naming `name` for a non-finite coordinate
+// from the file if touched again); a view that reads its file (BinaryStlView::file) touches no
+// mapped page and releases none. Throws InputError naming `name` for a non-finite coordinate
 // (check_binary_stl_finite) or more vertices than 32-bit indices can hold.
 WeldedTriangles weld_binary_stl(const BinaryStlView& view, const std::string& name,
                                 bool release_records = false);
