@@ -8,7 +8,8 @@
 // * Page faults: every first touch of a fresh 4 KiB page is a fault, and on a paravirtualised
 //   guest each one exits to the hypervisor. On the 2026-11-25 VM (AMD EPYC, kernel 6.18) a 12 MB
 //   array took 35–53 ms to fault in with 4 KiB pages (about 15 µs a page) and 1 ms with 2 MiB
-//   pages, where the kernel zeroes each huge page in one fault.
+//   pages, where the kernel zeroes each huge page in one fault. (The VM of 2026-11-21 was slow to
+//   back fresh huge pages instead, and only the tables gained there: docs/topology.md.)
 //
 // Huge pages apply only to whole 2 MiB-aligned ranges: HugePageAllocator gives the large blocks
 // that alignment, so that no array keeps a 4 KiB-paged head and tail. THP is often in `madvise`

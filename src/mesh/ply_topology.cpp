@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "edge_group.hpp"
+#include "huge_pages.hpp"
 #include "page_release.hpp"
 #include "pgamesh/geometry/bounding_box.hpp"
 #include "pgamesh/geometry/chunked_sums.hpp"
@@ -153,7 +154,8 @@ class VertexStore {
   using Key = CoordinateKey<Bits>;
   static_assert(sizeof(Key) <= sizeof(Vec3d));
 
-  explicit VertexStore(std::size_t n) : storage_(new std::byte[n * sizeof(Vec3d)]), count_(n) {}
+  explicit VertexStore(std::size_t n)
+      : storage_(detail::uninitialized_array<std::byte>(n * sizeof(Vec3d))), count_(n) {}
 
   Key* keys() { return std::launder(reinterpret_cast<Key*>(storage_.get())); }
   const Key& operator[](std::size_t v) const {
@@ -175,7 +177,7 @@ class VertexStore {
   }
 
  private:
-  std::unique_ptr<std::byte[]> storage_;
+  detail::UninitializedArray<std::byte> storage_;
   std::size_t count_;
 };
 
@@ -243,6 +245,7 @@ std::optional<CoordinateWeld<Bits>> weld_coordinates(VertexStore<Bits>&& store) 
           if (!w.to_welded.empty()) {
             w.to_welded[i] = id;
           } else if (id != i) {
+            detail::reserve_huge(w.to_welded, n);
             w.to_welded.resize(n);
             std::iota(w.to_welded.begin(), w.to_welded.begin() + static_cast<std::ptrdiff_t>(i),
                       0u);
@@ -256,7 +259,7 @@ std::optional<CoordinateWeld<Bits>> weld_coordinates(VertexStore<Bits>&& store) 
   if (!w.to_welded.empty()) {
     // Classes are numbered in order of their first vertex: class `next` first appears where
     // to_welded reaches it.
-    w.representative.reserve(w.positions.size());
+    detail::reserve_huge(w.representative, w.positions.size());
     for (std::size_t i = 0; i < n; ++i)
       if (w.to_welded[i] == w.representative.size())
         w.representative.push_back(static_cast<std::uint32_t>(i));
@@ -325,6 +328,7 @@ class PlyPass {
     const auto input_vertices = static_cast<std::int64_t>(ply_.vertex_count);
     StreamedChunkSums<> chunks;
     std::vector<bool> referenced(vertices);
+    detail::reserve_huge(start_, vertices + 1);
     start_.assign(vertices + 1, 0);
     collapsed_.assign(ply_.face_count, false);
     detail::PageRelease release(ply_.faces, release_pages_, release_step);

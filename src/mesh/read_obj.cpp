@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <string>
 
+#include "huge_pages.hpp"
 #include "page_release.hpp"
 #include "pgamesh/input_error.hpp"
 #include "readers.hpp"
@@ -41,9 +42,9 @@ void read_obj(std::span<const char> bytes, const std::string& name, Mesh& mesh, 
   // Estimates only (vectors grow past them), generous because growing copies the array (a peak of
   // old and new side by side) while untouched reserve is virtual memory only: a corner takes at
   // least 2 bytes ("1 "), a typical one 7 or more; a face at least 8 ("f 1 2 3\n"), typically 20.
-  mesh.vertices.reserve(bytes.size() / 64);
-  mesh.corners.reserve(bytes.size() / 6);
-  mesh.face_offsets.reserve(bytes.size() / 16 + 1);
+  reserve_huge(mesh.vertices, bytes.size() / 64);
+  reserve_huge(mesh.corners, bytes.size() / 6);
+  reserve_huge(mesh.face_offsets, bytes.size() / 16 + 1);
 
   // Positive indices may refer to vertices defined later in the file; the largest one is checked
   // against the final vertex count, reported at its own position.

@@ -4,6 +4,7 @@
 // a comment. 4OFF / nOFF (other dimensions) and binary OFF are rejected with an error.
 #include <string>
 
+#include "huge_pages.hpp"
 #include "page_release.hpp"
 #include "pgamesh/input_error.hpp"
 #include "readers.hpp"
@@ -67,7 +68,8 @@ void read_off(std::span<const char> bytes, const std::string& name, Mesh& mesh, 
     c.fail(nat, "vertex count " + std::to_string(nv) + " exceeds the 32-bit indices");
 
   const auto remaining = [&] { return static_cast<std::size_t>(c.end - c.p); };
-  mesh.vertices.reserve(bounded_reserve(nv, remaining(), 6));  // "0 0 0\n" is the shortest vertex
+  reserve_huge(mesh.vertices,
+               bounded_reserve(nv, remaining(), 6));  // "0 0 0\n" is the shortest vertex
   for (std::uint64_t i = 0; i < nv; ++i) {
     release.passed(c.p);
     skip_to_record(c);
@@ -81,8 +83,8 @@ void read_off(std::span<const char> bytes, const std::string& name, Mesh& mesh, 
     mesh.vertices.push_back(v);
     end_record(c);
   }
-  mesh.face_offsets.reserve(bounded_reserve(nf, remaining(), 8) + 1);  // "3 0 1 2\n"
-  mesh.corners.reserve(3 * bounded_reserve(nf, remaining(), 8));
+  reserve_huge(mesh.face_offsets, bounded_reserve(nf, remaining(), 8) + 1);  // "3 0 1 2\n"
+  reserve_huge(mesh.corners, 3 * bounded_reserve(nf, remaining(), 8));
   for (std::uint64_t f = 0; f < nf; ++f) {
     release.passed(c.p);
     skip_to_record(c);

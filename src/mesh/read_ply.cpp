@@ -11,6 +11,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "huge_pages.hpp"
 #include "page_release.hpp"
 #include "pgamesh/geometry/chunked_sums.hpp"
 #include "pgamesh/input_error.hpp"
@@ -145,8 +146,8 @@ struct StoredFaces {
   Mesh& mesh;
   void start(const Mesh&) {}
   void reserve(std::size_t faces, std::size_t corners) {
-    mesh.face_offsets.reserve(faces + 1);
-    mesh.corners.reserve(corners);
+    reserve_huge(mesh.face_offsets, faces + 1);
+    reserve_huge(mesh.corners, corners);
   }
   void add_corner(std::uint32_t v) { mesh.corners.push_back(v); }
   std::size_t corner_count() const { return mesh.corners.size(); }
@@ -262,7 +263,7 @@ void read_binary(const Header& h, const Layout& l, const TextCursor& c, Mesh& me
                          std::to_string(stride) + " bytes need " +
                          std::to_string(el.count * stride) + " bytes, " +
                          std::to_string(r.remaining()) + " left");
-      mesh.vertices.reserve(bounded_reserve(el.count, r.remaining(), fixed ? stride : 1));
+      reserve_huge(mesh.vertices, bounded_reserve(el.count, r.remaining(), fixed ? stride : 1));
       for (std::uint64_t i = 0; i < el.count; ++i) {
         release.passed(r.p_);
         Vec3d v;
@@ -369,7 +370,7 @@ void read_ascii(const Header& h, const Layout& l, TextCursor& c, Mesh& mesh, Fac
     const PlyElement& el = h.elements[e];
     if (el.props.empty()) continue;
     if (static_cast<int>(e) == l.vertex_element) {
-      mesh.vertices.reserve(bounded_reserve(el.count, remaining(), 2 * el.props.size()));
+      reserve_huge(mesh.vertices, bounded_reserve(el.count, remaining(), 2 * el.props.size()));
       for (std::uint64_t i = 0; i < el.count; ++i) {
         release.passed(c.p);
         Vec3d v;

@@ -2,6 +2,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "huge_pages.hpp"
 #include "page_release.hpp"
 #include "pgamesh/input_error.hpp"
 #include "pgamesh/mesh/read_mesh.hpp"
@@ -69,7 +70,10 @@ void read_stl_binary(std::span<const char> bytes, const std::string& name, Mesh&
   source.format = MeshFormat::stl_binary;
   source.single_precision = true;
   const auto n = static_cast<std::size_t>(view.count);
-  mesh.vertices.resize(3 * n);  // the file size has proven the count
+  reserve_huge(mesh.vertices, 3 * n);  // the file size has proven the count
+  reserve_huge(mesh.corners, 3 * n);
+  reserve_huge(mesh.face_offsets, n + 1);
+  mesh.vertices.resize(3 * n);
   mesh.corners.resize(3 * n);
   mesh.face_offsets.resize(n + 1);
   PageRelease release(view.records, release_pages);
@@ -92,9 +96,9 @@ void read_stl_ascii(std::span<const char> bytes, const std::string& name, Mesh& 
   source.format = MeshFormat::stl_ascii;
   // Typical exporters write 180-250 bytes a facet; reserve for 120 so that the arrays are never
   // reallocated (a copy that would double the peak). Unused reserve is untouched virtual memory.
-  mesh.vertices.reserve(bytes.size() / 40);
-  mesh.corners.reserve(bytes.size() / 40);
-  mesh.face_offsets.reserve(bytes.size() / 120 + 1);
+  reserve_huge(mesh.vertices, bytes.size() / 40);
+  reserve_huge(mesh.corners, bytes.size() / 40);
+  reserve_huge(mesh.face_offsets, bytes.size() / 120 + 1);
 
   auto expect = [&](const char* keyword) {
     c.skip_space();

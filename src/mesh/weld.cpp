@@ -35,11 +35,12 @@ template <class Keys>
 WeldMap weld_exact(std::span<const Vec3d> v, Keys& keys) {
   WeldMap out;
   const std::size_t n = v.size();
+  detail::reserve_huge(out.to_welded, n);
   out.to_welded.resize(n);
   // Meshes read from STL share each vertex among about six corners: start the table for n / 4
   // classes and let it grow, so the common case touches a table that is 4× smaller.
   ExactTable table(n / 4 + 16);
-  out.representative.reserve(n / 4 + 16);
+  detail::reserve_huge(out.representative, n / 4 + 16);
 
   detail::visit_prefetched(
       table, n, [&](std::size_t i) { return ExactTraits::hash(v[i]); },
@@ -128,7 +129,7 @@ WeldMap weld_map(std::span<const Vec3d> vertices, double tolerance) {
     throw std::length_error("weld: more than 2^32 - 2 vertices");
   if (tolerance != 0) return weld_tolerance(vertices, tolerance);
   std::vector<Vec3d> keys;
-  keys.reserve(vertices.size() / 4 + 16);
+  detail::reserve_huge(keys, vertices.size() / 4 + 16);
   return weld_exact(vertices, keys);
 }
 

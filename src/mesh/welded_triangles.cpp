@@ -3,6 +3,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "huge_pages.hpp"
 #include "pgamesh/geometry/bounding_box.hpp"
 #include "pgamesh/geometry/chunked_sums.hpp"
 #include "pgamesh/mesh/weld.hpp"
@@ -37,9 +38,11 @@ WeldedTriangles weld_triangles(const Mesh& mesh, double tolerance) {
   w.merged = map.merged;
   w.max_moved = map.max_moved;
   w.tolerance = map.tolerance;
+  detail::reserve_huge(w.positions, map.welded_count());
   w.positions.resize(map.welded_count());
   for (std::size_t i = 0; i < w.positions.size(); ++i)
     w.positions[i] = mesh.vertices[map.representative[i]];
+  detail::reserve_huge(w.corners, mesh.corners.size());
   w.corners.resize(mesh.corners.size());
   for (std::size_t c = 0; c < mesh.corners.size(); ++c)
     w.corners[c] = map.to_welded[mesh.corners[c]];

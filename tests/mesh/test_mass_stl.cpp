@@ -12,6 +12,7 @@
 #include "pgamesh/mesh/read_mesh.hpp"
 #include "pgamesh/mesh/stl_mass_properties.hpp"
 #include "support/golden.hpp"
+#include "support/read_helpers.hpp"
 #include "support/same_topology.hpp"
 #include "support/solids.hpp"
 #include "support/stl_bytes.hpp"
@@ -118,6 +119,35 @@ TEST(MassStl, IrregularTetrahedronHasVolumeOne) {
   EXPECT_NEAR(p.inertia_origin[0][2], -zx, 1e-15);
 }
 
+namespace {
+
+// A binary STL written to a temporary file and mapped, viewed with its records read from the file
+// (BinaryStlView::file) in blocks.
+struct StlFile {
+  explicit StlFile(const std::vector<char>& bytes)
+      : file(".stl", {bytes.data(), bytes.size()}),
+        mapped(MappedFile::open(file.path())),
+        view(binary_stl_view(mapped.bytes(), file.path()).value()) {
+    view.file = mapped.descriptor();
+  }
+  TempFile file;
+  MappedFile mapped;
+  BinaryStlView view;
+};
+
+// The InputError that the mass properties of `stl` must raise; a test failure otherwise.
+InputError mass_error(const StlFile& stl) {
+  try {
+    binary_stl_mass_properties(stl.view, stl.file.path());
+  } catch (const InputError& e) {
+    return e;
+  }
+  ADD_FAILURE() << "expected an InputError";
+  return InputError("", {}, "");
+}
+
+}  // namespace
+
 // A view whose records are read from its file (BinaryStlView::file) in blocks: the same bits as
 // the view of the bytes in memory, on one thread or two.
 TEST(MassStl, ReadingTheFileEqualsReadingMemory) {
@@ -125,16 +155,12 @@ TEST(MassStl, ReadingTheFileEqualsReadingMemory) {
   m.corners.resize(m.corners.size() - 9);  // three triangles fewer: a count that is no
   m.face_offsets.resize(m.face_offsets.size() - 3);  // multiple of the four lanes
   const std::vector<char> bytes = binary_stl_bytes(m);
-  const TempFile file(".stl", {bytes.data(), bytes.size()});
-  const MappedFile mapped = MappedFile::open(file.path());
-  auto view = binary_stl_view(mapped.bytes(), file.path());
-  ASSERT_TRUE(view.has_value());
-  view->file = mapped.descriptor();
-  ASSERT_GE(view->file, 0);
+  const StlFile stl(bytes);
+  ASSERT_GE(stl.view.file, 0);
   for (unsigned threads : {1u, 2u}) {
     MassOptions opt;
     opt.threads = threads;
-    expect_same_mass(binary_stl_mass_properties(*view, file.path(), opt, true),
+    expect_same_mass(binary_stl_mass_properties(stl.view, stl.file.path(), opt, true),
                      streamed(bytes, threads));
   }
 }
@@ -144,34 +170,13 @@ TEST(MassStl, ReadingTheFileNamesTheNonFiniteByte) {
   const float nan = std::numeric_limits<float>::quiet_NaN();
   const std::size_t at = 84 + 50 * 5000 + 12 + 12 * 2 + 4;  // triangle 5001, vertex 3, y
   std::memcpy(bytes.data() + at, &nan, 4);
-  const TempFile file(".stl", {bytes.data(), bytes.size()});
-  const MappedFile mapped = MappedFile::open(file.path());
-  auto view = binary_stl_view(mapped.bytes(), file.path());
-  ASSERT_TRUE(view.has_value());
-  view->file = mapped.descriptor();
-  try {
-    binary_stl_mass_properties(*view, file.path());
-    FAIL() << "no error for a NaN coordinate";
-  } catch (const InputError& e) {
-    EXPECT_EQ(e.where().byte_offset, at);
-    EXPECT_NE(std::string(e.what()).find("triangle 5001, vertex 3"), std::string::npos) << e.what();
-  }
+  EXPECT_BYTE_ERROR(mass_error(StlFile(bytes)), at, "triangle 5001, vertex 3");
 }
 
 TEST(MassStl, AFileShortenedWhileReadIsAnErrorAtItsEnd) {
   const std::vector<char> bytes = binary_stl_bytes(uv_sphere(1, 40, 80));
-  const TempFile file(".stl", {bytes.data(), bytes.size()});
-  const MappedFile mapped = MappedFile::open(file.path());
-  auto view = binary_stl_view(mapped.bytes(), file.path());
-  ASSERT_TRUE(view.has_value());
-  view->file = mapped.descriptor();
+  const StlFile stl(bytes);
   const std::size_t kept = 84 + 50 * 1000 + 7;
-  ASSERT_EQ(::truncate(file.path().c_str(), static_cast<off_t>(kept)), 0);
-  try {
-    binary_stl_mass_properties(*view, file.path());
-    FAIL() << "no error for a file shortened under the reader";
-  } catch (const InputError& e) {
-    EXPECT_EQ(e.where().byte_offset, kept);
-    EXPECT_NE(std::string(e.what()).find("shortened"), std::string::npos) << e.what();
-  }
+  ASSERT_EQ(::truncate(stl.file.path().c_str(), static_cast<off_t>(kept)), 0);
+  EXPECT_BYTE_ERROR(mass_error(stl), kept, "shortened");
 }
