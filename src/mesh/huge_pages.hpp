@@ -25,6 +25,8 @@
 #include <new>
 #include <vector>
 
+#include "page_release.hpp"
+
 namespace pgamesh::detail {
 
 // Asks for huge pages on the 2 MiB-aligned part of [data, data + bytes). Call before the pages
@@ -90,6 +92,15 @@ template <class T>
 void reserve_huge(std::vector<T>& v, std::size_t n) {
   v.reserve(n);
   advise_huge_pages(v.data(), v.capacity() * sizeof(T));
+}
+
+// Gives back the whole pages of v's storage beyond its size (madvise MADV_DONTNEED; the kernel
+// splits a huge page to do so): the readers reserve generously (reserve_huge) and fill an unknown
+// part, and the last huge page they touch would otherwise stay resident in full, up to 2 MiB per
+// array. The storage stays valid: a page given back reads as zeros when touched again.
+template <class T, class A>
+void release_unused_capacity(std::vector<T, A>& v) {
+  release_pages(v.data() + v.size(), v.data() + v.capacity());
 }
 
 }  // namespace pgamesh::detail

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <cstring>
 
+#include "huge_pages.hpp"
 #include "page_release.hpp"
 #include "pgamesh/input_error.hpp"
 #include "pgamesh/mesh/mapped_file.hpp"
@@ -142,6 +143,10 @@ Mesh read_mesh_bytes(std::span<const char> bytes, const std::string& name, MeshS
   }
   // The readers release in steps as they go; the last step and the first page (detection) too.
   if (release_pages) detail::release_pages(bytes.data(), bytes.data() + bytes.size());
+  // And the untouched rest of the huge pages their reserved arrays ended in.
+  detail::release_unused_capacity(mesh.vertices);
+  detail::release_unused_capacity(mesh.corners);
+  detail::release_unused_capacity(mesh.face_offsets);
   return mesh;
 }
 
