@@ -69,7 +69,8 @@ struct HugePageAllocator {
 
   void deallocate(T* p, std::size_t n) noexcept {
     if (n * sizeof(T) < huge_page_bytes / 2) return std::allocator<T>().deallocate(p, n);
-    ::operator delete (p, whole_huge_pages(n), std::align_val_t{huge_page_bytes});
+    // The unsized form: clang before 19 declares the sized one only with -fsized-deallocation.
+    ::operator delete (p, std::align_val_t{huge_page_bytes});
   }
 
   template <class U>
