@@ -39,6 +39,19 @@ std::vector<char> stl_of(const Mesh& m) {
   return out;
 }
 
+// The wall or CPU time per triangle, of `triangles` per iteration, as the counter ns_per_triangle.
+void set_ns_per_triangle(benchmark::State& state, std::size_t triangles) {
+  state.counters["ns_per_triangle"] =
+      benchmark::Counter(static_cast<double>(state.iterations() * triangles),
+                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
+// The binary STL of sphere(8), made once.
+const std::vector<char>& sphere_stl() {
+  static const std::vector<char> bytes = stl_of(sphere(8));
+  return bytes;
+}
+
 // The bare per-triangle sums, one thread, vertices already relative to the reference point.
 void BM_AddTriangle(benchmark::State& state) {
   const Mesh& m = sphere(static_cast<int>(state.range(0)));
@@ -51,9 +64,7 @@ void BM_AddTriangle(benchmark::State& state) {
     benchmark::DoNotOptimize(s);
   }
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(m.face_count()));
-  state.counters["ns_per_triangle"] =
-      benchmark::Counter(static_cast<double>(state.iterations() * m.face_count()),
-                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  set_ns_per_triangle(state, m.face_count());
 }
 BENCHMARK(BM_AddTriangle)->Arg(6)->Arg(8)->Unit(benchmark::kMillisecond);
 
@@ -64,9 +75,7 @@ void BM_MassPropertiesMesh(benchmark::State& state) {
   opt.threads = static_cast<unsigned>(state.range(1));
   for (auto _ : state) benchmark::DoNotOptimize(mass_properties(m, opt));
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(m.face_count()));
-  state.counters["ns_per_triangle"] =
-      benchmark::Counter(static_cast<double>(state.iterations() * m.face_count()),
-                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  set_ns_per_triangle(state, m.face_count());
 }
 BENCHMARK(BM_MassPropertiesMesh)
     ->Args({8, 1})
@@ -76,42 +85,36 @@ BENCHMARK(BM_MassPropertiesMesh)
 
 // The streamed binary STL path from bytes in memory: MB/s of STL; threads = range(1).
 void BM_StreamedStl(benchmark::State& state) {
-  static const std::vector<char> bytes = stl_of(sphere(8));
+  const std::vector<char>& bytes = sphere_stl();
   const auto view = binary_stl_view(bytes, "bench.stl");
   MassOptions opt;
   opt.threads = static_cast<unsigned>(state.range(0));
   for (auto _ : state)
     benchmark::DoNotOptimize(binary_stl_mass_properties(*view, "bench.stl", opt));
   state.SetBytesProcessed(state.iterations() * static_cast<std::int64_t>(bytes.size()));
-  state.counters["ns_per_triangle"] =
-      benchmark::Counter(static_cast<double>(state.iterations() * view->count),
-                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  set_ns_per_triangle(state, view->count);
 }
 BENCHMARK(BM_StreamedStl)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // The exact weld of the binary STL records (welded_triangles.hpp), both cores: ns per triangle.
 void BM_WeldBinaryStl(benchmark::State& state) {
-  static const std::vector<char> bytes = stl_of(sphere(8));
+  const std::vector<char>& bytes = sphere_stl();
   const auto view = binary_stl_view(bytes, "bench.stl");
   for (auto _ : state) benchmark::DoNotOptimize(weld_binary_stl(*view, "bench.stl"));
-  state.counters["ns_per_triangle"] =
-      benchmark::Counter(static_cast<double>(state.iterations() * view->count),
-                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  set_ns_per_triangle(state, view->count);
 }
 BENCHMARK(BM_WeldBinaryStl)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // The topology and mass pass on the welded triangles (triangle_topology.hpp) that `pgamesh props`
 // runs after the weld: face sums, edges, loops, orientation, components.
 void BM_WeldedTriangleProps(benchmark::State& state) {
-  static const std::vector<char> bytes = stl_of(sphere(8));
+  const std::vector<char>& bytes = sphere_stl();
   const auto view = binary_stl_view(bytes, "bench.stl");
   const WeldedTriangles welded = weld_binary_stl(*view, "bench.stl");
   for (auto _ : state)
     benchmark::DoNotOptimize(
         analyze_welded_triangles(welded, Vec3d{0, 0, 0}, MassOptions{}, TopologyOptions{}, true));
-  state.counters["ns_per_triangle"] =
-      benchmark::Counter(static_cast<double>(state.iterations() * view->count),
-                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  set_ns_per_triangle(state, view->count);
 }
 BENCHMARK(BM_WeldedTriangleProps)->Unit(benchmark::kMillisecond)->UseRealTime();
 

@@ -1,7 +1,6 @@
 #include "props_report.hpp"
 
 #include <exception>
-#include <filesystem>
 #include <optional>
 #include <system_error>
 #include <utility>
@@ -130,12 +129,14 @@ namespace {
 // The report of `bytes`. A binary STL is not read into a Mesh: without topology its mass
 // properties are streamed from the records; with exact-weld topology it is welded straight from
 // the records (welded_triangles.hpp), and both the mass properties and the topology come from the
-// welded triangles — the same figures as reading the mesh first, in a quarter of the memory. With
-// `release_records` (bytes of a read-only file mapping) the readers give the pages back as they
-// pass; `file` is that mapping's open descriptor (or −1), from which the binary STL passes read
-// the records instead of touching the mapping (BinaryStlView::file).
+// welded triangles — the same figures as reading the mesh first, in a quarter of the memory.
+// `file` is the open descriptor of the read-only file mapping that `bytes` are (MappedFile), or −1
+// for bytes of our own: with a mapping, the binary STL passes read the records from the file
+// instead of touching the mapping (BinaryStlView::file), and the other readers give the mapping's
+// pages back as they pass.
 PropsReport props_of(std::span<const char> bytes, const std::string& name,
-                     const PropsOptions& options, bool release_records, int file) {
+                     const PropsOptions& options, int file) {
+  const bool release_records = file >= 0;
   const bool stl_allowed = options.format == MeshFormat::unknown ||
                            options.format == MeshFormat::stl_binary ||
                            options.format == MeshFormat::stl_ascii;
@@ -198,15 +199,14 @@ PropsReport props_of(std::span<const char> bytes, const std::string& name,
 
 PropsReport props_of_bytes(std::span<const char> bytes, const std::string& name,
                            const PropsOptions& options) {
-  return props_of(bytes, name, options, false, -1);
+  return props_of(bytes, name, options, -1);
 }
 
 PropsReport props_of_file(const std::string& path, const PropsOptions& options) {
+  // MappedFile maps regular files (descriptor() ≥ 0); standard input and pipes are read into a
+  // buffer of its own.
   const MappedFile file = MappedFile::open(path);
-  // MappedFile maps regular files; standard input and pipes are read into a buffer of their own.
-  std::error_code ec;
-  const bool mapped = path != "-" && std::filesystem::is_regular_file(path, ec);
-  return props_of(file.bytes(), path, options, mapped, file.descriptor());
+  return props_of(file.bytes(), path, options, file.descriptor());
 }
 
 }  // namespace pgamesh::cli

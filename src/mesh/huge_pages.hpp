@@ -29,12 +29,14 @@
 
 namespace pgamesh::detail {
 
+inline constexpr std::size_t huge_page_bytes = std::size_t{1} << 21;
+
 // Asks for huge pages on the 2 MiB-aligned part of [data, data + bytes). Call before the pages
 // are first touched: the page-fault handler then maps whole huge pages. Only a hint — without THP
 // support, or for a range smaller than a huge page, nothing changes.
 inline void advise_huge_pages(const void* data, std::size_t bytes) {
 #ifdef MADV_HUGEPAGE
-  constexpr std::uintptr_t huge = std::uintptr_t{1} << 21;
+  constexpr std::uintptr_t huge = huge_page_bytes;
   const auto begin = (reinterpret_cast<std::uintptr_t>(data) + huge - 1) & ~(huge - 1);
   const auto end = (reinterpret_cast<std::uintptr_t>(data) + bytes) & ~(huge - 1);
   if (end > begin) madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
@@ -43,8 +45,6 @@ inline void advise_huge_pages(const void* data, std::size_t bytes) {
   (void)bytes;
 #endif
 }
-
-inline constexpr std::size_t huge_page_bytes = std::size_t{1} << 21;
 
 // A std::allocator whose blocks of at least half a huge page start on a huge-page boundary, span
 // whole huge pages and are advised MADV_HUGEPAGE before their first touch (a block of 1–2 MiB
@@ -59,7 +59,9 @@ struct HugePageAllocator {
   HugePageAllocator(const HugePageAllocator<U>&) noexcept {}
 
   T* allocate(std::size_t n) {
-    if (n > static_cast<std::size_t>(-1) / sizeof(T)) throw std::bad_array_new_length();
+    // Sizes whose round-up to whole huge pages would wrap around are refused.
+    if (n > (static_cast<std::size_t>(-1) - huge_page_bytes) / sizeof(T))
+      throw std::bad_array_new_length();
     if (n * sizeof(T) < huge_page_bytes / 2) return std::allocator<T>().allocate(n);
     const std::size_t bytes = whole_huge_pages(n);
     void* p = ::operator new (bytes, std::align_val_t{huge_page_bytes});

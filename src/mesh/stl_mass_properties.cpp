@@ -69,7 +69,7 @@ void add_records(LanedSums<>& lanes, const BinaryStlView& view, std::size_t begi
 
 MassProperties binary_stl_mass_properties(const BinaryStlView& view, const std::string& name,
                                           const MassOptions& options, bool release_records) {
-  const bool release = release_records && view.file < 0;  // read from the file: nothing mapped
+  const bool release = detail::releases_mapped_records(view, release_records);
   const Box3 box = sampled_box(view, name, release);
   const unsigned char* records_end = view.records + stl_record_bytes * view.count;
   if (release) detail::release_pages(view.records, records_end);

@@ -25,6 +25,12 @@ inline constexpr std::uint64_t records_per_block = 4096;
 const unsigned char* record_block(const BinaryStlView& view, std::uint64_t first,
                                   std::uint64_t count, const std::string& name);
 
+// Whether a pass over the view that was asked to release the mapped pages of its records
+// (`release_records`) has any to release: none when it reads them from the file.
+inline bool releases_mapped_records(const BinaryStlView& view, bool release_records) {
+  return release_records && view.file < 0;
+}
+
 // Calls visit(records, begin, end) for consecutive blocks [begin, end) covering [first, last), with
 // `records` pointing at record `begin` (record_block above).
 template <class Visit>

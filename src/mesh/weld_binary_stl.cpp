@@ -69,7 +69,7 @@ void weld_range(const BinaryStlView& view, const std::string& name, std::size_t 
   std::array<std::uint64_t, 32> ring{};
   std::array<Key, 32> ring_key{};
   detail::PageRelease release(view.records + stl_record_bytes * (first / 3),
-                              release_records && view.file < 0);
+                              detail::releases_mapped_records(view, release_records));
   detail::for_record_blocks(
       view, first / 3, last / 3, name,
       [&](const unsigned char* records, std::uint64_t record_begin, std::uint64_t record_end) {
