@@ -7,11 +7,11 @@
 #include <vector>
 
 #include "pgamesh/geometry/body_moments.hpp"
-#include "pgamesh/mesh/mass_properties.hpp"
+#include "pgamesh/mesh/mass/mass_properties.hpp"
+#include "pgamesh/mesh/mass/stl_mass_properties.hpp"
 #include "pgamesh/mesh/primitives.hpp"
-#include "pgamesh/mesh/stl_mass_properties.hpp"
-#include "pgamesh/mesh/triangle_topology.hpp"
-#include "pgamesh/mesh/welded_triangles.hpp"
+#include "pgamesh/mesh/topology/triangle_topology.hpp"
+#include "pgamesh/mesh/weld/welded_triangles.hpp"
 
 using namespace pgamesh;
 

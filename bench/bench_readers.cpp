@@ -12,11 +12,11 @@
 #include <map>
 #include <string>
 
-#include "pgamesh/mesh/mesh_format.hpp"
+#include "pgamesh/io/mesh_format.hpp"
+#include "pgamesh/io/read_mesh.hpp"
+#include "pgamesh/io/write_mesh.hpp"
+#include "pgamesh/mesh/mass/stl_ascii_mass_properties.hpp"
 #include "pgamesh/mesh/primitives.hpp"
-#include "pgamesh/mesh/read_mesh.hpp"
-#include "pgamesh/mesh/stl_ascii_mass_properties.hpp"
-#include "pgamesh/mesh/write_mesh.hpp"
 
 using namespace pgamesh;
 

@@ -8,12 +8,12 @@
 #include <cstring>
 #include <vector>
 
-#include "pgamesh/geometry/bounding_box.hpp"
+#include "pgamesh/core/bounding_box.hpp"
 #include "pgamesh/mesh/primitives.hpp"
-#include "pgamesh/mesh/topology.hpp"
-#include "pgamesh/mesh/triangle_topology.hpp"
-#include "pgamesh/mesh/weld.hpp"
-#include "pgamesh/mesh/welded_triangles.hpp"
+#include "pgamesh/mesh/topology/topology.hpp"
+#include "pgamesh/mesh/topology/triangle_topology.hpp"
+#include "pgamesh/mesh/weld/weld.hpp"
+#include "pgamesh/mesh/weld/welded_triangles.hpp"
 
 using namespace pgamesh;
 

@@ -9,9 +9,9 @@
 #include <cstdint>
 #include <cstring>
 
-#include "pgamesh/input_error.hpp"
-#include "pgamesh/mesh/read_mesh.hpp"
-#include "pgamesh/mesh/write_mesh.hpp"
+#include "pgamesh/core/input_error.hpp"
+#include "pgamesh/io/read_mesh.hpp"
+#include "pgamesh/io/write_mesh.hpp"
 
 namespace pgamesh::fuzz {
 

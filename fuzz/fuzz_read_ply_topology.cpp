@@ -7,9 +7,9 @@
 #include <optional>
 
 #include "fuzz_common.hpp"
-#include "pgamesh/mesh/mass_properties.hpp"
-#include "pgamesh/mesh/ply_topology.hpp"
-#include "pgamesh/mesh/topology.hpp"
+#include "pgamesh/mesh/mass/mass_properties.hpp"
+#include "pgamesh/mesh/topology/ply_topology.hpp"
+#include "pgamesh/mesh/topology/topology.hpp"
 
 namespace {
 

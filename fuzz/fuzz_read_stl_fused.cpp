@@ -2,7 +2,7 @@
 // pass must never crash or throw on bad input, and whatever it accepts the careful reader must
 // accept too, with the same facets (triangles only), vertices and warnings.
 #include "fuzz_common.hpp"
-#include "pgamesh/mesh/stl_ascii_mass_properties.hpp"
+#include "pgamesh/mesh/mass/stl_ascii_mass_properties.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace pgamesh;

@@ -12,12 +12,12 @@
 
 #include "check_json.hpp"
 #include "commands.hpp"
-#include "pgamesh/input_error.hpp"
-#include "pgamesh/mesh/mesh_format.hpp"
-#include "pgamesh/mesh/orientation.hpp"
-#include "pgamesh/mesh/read_mesh.hpp"
-#include "pgamesh/mesh/topology.hpp"
-#include "pgamesh/mesh/write_mesh.hpp"
+#include "pgamesh/core/input_error.hpp"
+#include "pgamesh/io/mesh_format.hpp"
+#include "pgamesh/io/read_mesh.hpp"
+#include "pgamesh/io/write_mesh.hpp"
+#include "pgamesh/mesh/topology/orientation.hpp"
+#include "pgamesh/mesh/topology/topology.hpp"
 
 namespace pgamesh::cli {
 

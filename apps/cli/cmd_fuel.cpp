@@ -19,9 +19,9 @@
 #include "commands.hpp"
 #include "fuel_json.hpp"
 #include "json_writer.hpp"
-#include "pgamesh/input_error.hpp"
-#include "pgamesh/mesh/read_mesh.hpp"
-#include "pgamesh/mesh/topology.hpp"
+#include "pgamesh/core/input_error.hpp"
+#include "pgamesh/io/read_mesh.hpp"
+#include "pgamesh/mesh/topology/topology.hpp"
 #include "pgamesh/tank/attitude.hpp"
 #include "pgamesh/tank/fuel_index.hpp"
 #include "pgamesh/tank/fuel_sweep.hpp"
@@ -262,26 +262,24 @@ void print_state(const tank::FuelState& st, const tank::LevelRange& range, doubl
               fmt(st.surface.second[0]).c_str());
 }
 
-// The tank must be closed, consistently oriented and outward for the fuel figures to mean
-// anything: judged by the topology report of `pgamesh check` (analyze_topology), and refused with
-// its figures and its wording (the notes `pgamesh props` prints) unless --force.
+// The tank must be fit for gauging (tank::tank_fitness, the rule the viewer applies too): refused
+// with its topology figures and the reasons unless --force.
 TankCheck check_tank(const Options& o, const Mesh& mesh, const tank::Tank& t) {
+  tank::TankFitness fitness = tank::tank_fitness(mesh, t);
   TankCheck c;
-  c.topology = analyze_topology(mesh);
-  const TopologyReport& r = c.topology;
-  c.fit = r.closed && r.orientation_consistent && r.volume_valid && t.volume > 0;
+  c.topology = std::move(fitness.topology);
+  c.fit = fitness.fit;
   if (c.fit) return c;
   c.forced = o.force;
+  const TopologyReport& r = c.topology;
   std::fprintf(stderr,
                "%s: %s: closed %s, orientation %s, %zu boundary edges, %zu non-manifold, %zu "
                "inconsistent, gap area %.17g, volume %.17g\n",
                o.file.c_str(), o.force ? "warning: not a closed outward tank" : "not a tank",
                r.closed ? "yes" : "no", r.orientation_consistent ? "consistent" : "INCONSISTENT",
                r.boundary_edges, r.nonmanifold_edges, r.inconsistent_edges, r.gap_area, t.volume);
-  for (const auto& note : r.notes) std::fprintf(stderr, "%s: %s\n", o.file.c_str(), note.c_str());
-  if (!(t.volume > 0))
-    std::fprintf(stderr, "%s: the signed volume %.17g is not positive (inside out or flat)\n",
-                 o.file.c_str(), t.volume);
+  for (const auto& problem : fitness.problems)
+    std::fprintf(stderr, "%s: %s\n", o.file.c_str(), problem.c_str());
   std::fprintf(stderr,
                o.force ? "%s: computing anyway (--force)\n"
                        : "%s: a tank must be closed and outward-oriented (--force to proceed)\n",

@@ -7,8 +7,8 @@
 #include <string>
 
 #include "commands.hpp"
-#include "pgamesh/input_error.hpp"
-#include "pgamesh/mesh/read_mesh.hpp"
+#include "pgamesh/core/input_error.hpp"
+#include "pgamesh/io/read_mesh.hpp"
 #include "props_report.hpp"
 
 namespace pgamesh::cli {
@@ -58,7 +58,7 @@ int usage_error(const std::string& message) {
 }
 
 int run_props(int argc, char** argv) {
-  PropsOptions options;
+  AnalysisOptions options;
   std::string file;
   bool json = false, urdf = false, mjcf = false, about_origin = false;
   for (int i = 1; i < argc; ++i) {
@@ -118,9 +118,9 @@ int run_props(int argc, char** argv) {
     return usage_error("give --density or --mass, not both");
   if (json + urdf + mjcf > 1) return usage_error("choose one of --json, --urdf, --mjcf");
 
-  PropsReport report;
+  Analysis report;
   try {
-    report = props_of_file(file, options);
+    report = analyze_file(file, options);
   } catch (const InputError& e) {
     std::fprintf(stderr, "pgamesh props: %s\n", e.what());
     return 1;
@@ -133,7 +133,7 @@ int run_props(int argc, char** argv) {
   } else if (urdf || mjcf) {
     std::fputs((urdf ? props_urdf(report) : props_mjcf(report)).c_str(), stdout);
     for (const auto& w : report.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
-    if (report.meaningful.has_value() && !*report.meaningful)
+    if (report.volume_valid.has_value() && !*report.volume_valid)
       for (const auto& r : report.reasons)
         std::fprintf(stderr, "pgamesh props: not meaningful: %s\n", r.c_str());
   } else {

@@ -5,6 +5,8 @@
 #include <limits>
 #include <numeric>
 
+#include "pgamesh/core/bounding_box.hpp"
+
 namespace pgamesh::tank {
 
 namespace {
@@ -134,13 +136,13 @@ FuelState FuelIndex::query(const FuelPlane& plane) const {
     // Only split pieces: sum them about o′ on the plane like the reference pass (eq. 4.13), which
     // keeps every digit of a small fuel region (ERRATA §6).
     // o′ near the fuel-side vertices of the open leaves (ERRATA §6), as in fuel_naive.
-    VertexBox kept;
+    Box3 kept;
     const pga3::Plane<double> p = plane.plane();
     for (std::uint32_t id : open)
       for (std::uint32_t i = nodes_[id].first; i < nodes_[id].first + nodes_[id].count; ++i)
         for (std::uint32_t k : tank_->triangles[order_[i]])
           if (pga3::join(p, pga3::point(tank_->vertices[k])) <= 0) kept.add(tank_->vertices[k]);
-    if (!kept.empty()) ctx.frame = surface_frame(plane, kept.center());
+    if (!kept.empty()) ctx.frame = surface_frame(plane, kept.centre());
     ctx.reference = ctx.frame.origin;
     ctx.cone_over_surface = false;
   } else {

@@ -2,6 +2,8 @@
 
 #include <vector>
 
+#include "pgamesh/core/bounding_box.hpp"
+
 namespace pgamesh::tank {
 
 FuelState fuel_state(const Tank& tank, const FuelPlane& plane, const SliceContext& ctx,
@@ -41,13 +43,13 @@ FuelState fuel_naive(const Tank& tank, const FuelPlane& plane) {
   // centre the fan from o′ over a small fill would cancel terms of the tank's size.
   const pga3::Plane<double> p = plane.plane();
   std::vector<double> d(tank.vertices.size());
-  VertexBox kept;
+  Box3 kept;
   for (std::size_t i = 0; i < d.size(); ++i) {
     d[i] = pga3::join(p, pga3::point(tank.vertices[i]));
     if (d[i] <= 0) kept.add(tank.vertices[i]);
   }
   SliceContext ctx;
-  ctx.frame = surface_frame(plane, kept.empty() ? tank.reference : kept.center());
+  ctx.frame = surface_frame(plane, kept.empty() ? tank.reference : kept.centre());
   ctx.reference = ctx.frame.origin;  // o′ on the plane: the free surface adds nothing (eq. 4.13)
   ctx.cone_over_surface = false;
   SliceSums sums;

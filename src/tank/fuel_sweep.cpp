@@ -8,6 +8,8 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "pgamesh/core/bounding_box.hpp"
+
 namespace pgamesh::tank {
 
 namespace {
@@ -102,7 +104,7 @@ std::vector<FuelState> fuel_sweep(const Tank& tank, Vec3d up_in, std::span<const
   }
 
   std::vector<FuelState> out(m);
-  VertexBox kept_box;
+  Box3 kept_box;
   BoundarySums two_in;  // triangles with at least two corners in the fuel, whole
   std::vector<Crossing> crossing;
   for (std::uint32_t k = 0; k < m; ++k) {
@@ -130,7 +132,7 @@ std::vector<FuelState> fuel_sweep(const Tank& tank, Vec3d up_in, std::span<const
       // fuel-side vertices like the reference pass (eq. 4.13), which keeps every digit of a small
       // fuel region (ERRATA §6).
       std::erase_if(crossing, [&](const Crossing& c) { return c.whole_from <= k; });
-      if (!kept_box.empty()) ctx.frame = surface_frame(plane, kept_box.center());
+      if (!kept_box.empty()) ctx.frame = surface_frame(plane, kept_box.centre());
       ctx.reference = ctx.frame.origin;
       for (std::uint32_t i = 0; i < enter_start[k + 1]; ++i) {
         const auto& tri = tank.triangles[by_enter[i]];

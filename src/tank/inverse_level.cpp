@@ -4,17 +4,9 @@
 #include <stdexcept>
 #include <string>
 
+#include "pgamesh/core/number_text.hpp"
+
 namespace pgamesh::tank {
-
-namespace {
-
-std::string number(double x) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.17g", x);
-  return buf;
-}
-
-}  // namespace
 
 LevelSolution level_for_volume(const FuelIndex& index, Vec3d up_in, double volume) {
   const Vec3d up = unit_up(up_in);
@@ -25,10 +17,10 @@ LevelSolution level_for_volume(const FuelIndex& index, Vec3d up_in, double volum
 LevelSolution level_for_volume(const std::function<FuelState(const FuelPlane&)>& query, Vec3d up,
                                LevelRange range, double total, double volume) {
   if (!std::isfinite(volume)) throw std::domain_error("the volume must be finite");
-  if (volume < 0) throw std::domain_error("the volume " + number(volume) + " is negative");
+  if (volume < 0) throw std::domain_error("the volume " + format_number(volume) + " is negative");
   if (volume > total * (1 + 1e-12))
-    throw std::domain_error("the volume " + number(volume) + " exceeds the tank's volume " +
-                            number(total));
+    throw std::domain_error("the volume " + format_number(volume) + " exceeds the tank's volume " +
+                            format_number(total));
   LevelSolution s;
   if (volume == 0) return {range.lowest, 0, 0};
   if (volume >= total) return {range.highest, total, 0};
@@ -61,7 +53,7 @@ LevelSolution level_for_volume(const std::function<FuelState(const FuelPlane&)>&
 
 LevelSolution level_for_fraction(const FuelIndex& index, Vec3d up, double fraction) {
   if (!std::isfinite(fraction) || fraction < 0 || fraction > 1 + 1e-12)
-    throw std::domain_error("the fraction " + number(fraction) + " is outside [0, 1]");
+    throw std::domain_error("the fraction " + format_number(fraction) + " is outside [0, 1]");
   return level_for_volume(index, up, std::min(fraction, 1.0) * index.tank().volume);
 }
 

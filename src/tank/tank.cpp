@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "pgamesh/core/number_text.hpp"
+
 namespace pgamesh::tank {
 
 Tank make_tank(const Mesh& mesh) {
@@ -58,8 +60,17 @@ LevelRange level_range(const Tank& tank, Vec3d unit_up) {
   return r;
 }
 
-bool is_gaugeable(const Tank& tank, double relative_gap) {
-  return tank.volume > 0 && tank.gap_area <= relative_gap * tank.area;
+TankFitness tank_fitness(const Mesh& mesh, const Tank& tank) {
+  TankFitness f;
+  f.topology = analyze_topology(mesh);
+  const TopologyReport& r = f.topology;
+  f.fit = r.closed && r.orientation_consistent && r.volume_valid && tank.volume > 0;
+  if (f.fit) return f;
+  f.problems = r.notes;
+  if (!(tank.volume > 0))
+    f.problems.push_back("the signed volume " + format_number(tank.volume) +
+                         " is not positive (inside out or flat)");
+  return f;
 }
 
 }  // namespace pgamesh::tank

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <string>
 
-#include "pgamesh/mesh/read_mesh.hpp"
-#include "pgamesh/mesh/topology.hpp"
+#include "pgamesh/io/read_mesh.hpp"
+#include "pgamesh/mesh/topology/topology.hpp"
 #include "support/cli_run.hpp"
 #include "support/golden.hpp"
 #include "support/temp_file.hpp"

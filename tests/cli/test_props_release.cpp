@@ -8,10 +8,10 @@
 #include <algorithm>
 #include <string>
 
-#include "pgamesh/input_error.hpp"
-#include "pgamesh/mesh/mesh_format.hpp"
-#include "pgamesh/mesh/read_mesh.hpp"
-#include "pgamesh/mesh/write_mesh.hpp"
+#include "pgamesh/core/input_error.hpp"
+#include "pgamesh/io/mesh_format.hpp"
+#include "pgamesh/io/read_mesh.hpp"
+#include "pgamesh/io/write_mesh.hpp"
 #include "support/cli_run.hpp"
 #include "support/golden.hpp"
 #include "support/solids.hpp"

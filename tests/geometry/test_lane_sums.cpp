@@ -14,7 +14,7 @@
 #include "pgamesh/algebra/double4.hpp"
 #include "pgamesh/geometry/body_moments.hpp"
 #include "pgamesh/geometry/chunked_sums.hpp"
-#include "pgamesh/mesh/stl_binary.hpp"
+#include "pgamesh/io/stl_binary.hpp"
 
 namespace pgamesh {
 namespace {

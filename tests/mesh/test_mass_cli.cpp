@@ -9,7 +9,7 @@
 #include <fstream>
 #include <string>
 
-#include "pgamesh/mesh/write_mesh.hpp"
+#include "pgamesh/io/write_mesh.hpp"
 #include "support/cli_run.hpp"
 #include "support/golden.hpp"
 #include "support/solids.hpp"

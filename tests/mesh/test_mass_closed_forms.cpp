@@ -8,7 +8,7 @@
 #include <random>
 
 #include "pgamesh/geometry/chunked_sums.hpp"
-#include "pgamesh/mesh/mass_properties.hpp"
+#include "pgamesh/mesh/mass/mass_properties.hpp"
 #include "support/solids.hpp"
 
 using namespace pgamesh;

@@ -7,8 +7,8 @@
 #include <limits>
 #include <random>
 
-#include "pgamesh/geometry/bounding_box.hpp"
-#include "pgamesh/mesh/mass_properties.hpp"
+#include "pgamesh/core/bounding_box.hpp"
+#include "pgamesh/mesh/mass/mass_properties.hpp"
 #include "support/solids.hpp"
 
 #ifdef PGAMESH_HAVE_GMP

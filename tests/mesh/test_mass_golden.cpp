@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "pgamesh/geometry/inertia_frame.hpp"
-#include "pgamesh/mesh/mass_properties.hpp"
+#include "pgamesh/mesh/mass/mass_properties.hpp"
 #include "support/golden.hpp"
 #include "support/golden_mesh.hpp"
 

@@ -3,9 +3,9 @@
 // give negative volumes, reported as such.
 #include <gtest/gtest.h>
 
-#include "pgamesh/geometry/bounding_box.hpp"
-#include "pgamesh/mesh/mass_properties.hpp"
-#include "pgamesh/mesh/read_mesh.hpp"
+#include "pgamesh/core/bounding_box.hpp"
+#include "pgamesh/io/read_mesh.hpp"
+#include "pgamesh/mesh/mass/mass_properties.hpp"
 #include "support/golden.hpp"
 
 #ifdef PGAMESH_HAVE_GMP

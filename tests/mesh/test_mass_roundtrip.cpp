@@ -3,10 +3,10 @@
 // back gives bit-identical mass properties.
 #include <gtest/gtest.h>
 
-#include "pgamesh/mesh/mass_properties.hpp"
-#include "pgamesh/mesh/mesh_format.hpp"
-#include "pgamesh/mesh/read_mesh.hpp"
-#include "pgamesh/mesh/write_mesh.hpp"
+#include "pgamesh/io/mesh_format.hpp"
+#include "pgamesh/io/read_mesh.hpp"
+#include "pgamesh/io/write_mesh.hpp"
+#include "pgamesh/mesh/mass/mass_properties.hpp"
 
 using namespace pgamesh;
 

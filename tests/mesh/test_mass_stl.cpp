@@ -7,10 +7,10 @@
 #include <cstring>
 #include <limits>
 
-#include "pgamesh/input_error.hpp"
-#include "pgamesh/mesh/mapped_file.hpp"
-#include "pgamesh/mesh/read_mesh.hpp"
-#include "pgamesh/mesh/stl_mass_properties.hpp"
+#include "pgamesh/core/input_error.hpp"
+#include "pgamesh/io/mapped_file.hpp"
+#include "pgamesh/io/read_mesh.hpp"
+#include "pgamesh/mesh/mass/stl_mass_properties.hpp"
 #include "support/golden.hpp"
 #include "support/read_helpers.hpp"
 #include "support/same_topology.hpp"

@@ -15,12 +15,12 @@
 #include <string>
 #include <vector>
 
+#include "pgamesh/core/input_error.hpp"
 #include "pgamesh/geometry/chunked_sums.hpp"
-#include "pgamesh/input_error.hpp"
-#include "pgamesh/mesh/mapped_file.hpp"
-#include "pgamesh/mesh/mass_properties.hpp"
-#include "pgamesh/mesh/ply_mass_properties.hpp"
-#include "pgamesh/mesh/read_mesh.hpp"
+#include "pgamesh/io/mapped_file.hpp"
+#include "pgamesh/io/read_mesh.hpp"
+#include "pgamesh/mesh/mass/mass_properties.hpp"
+#include "pgamesh/mesh/mass/ply_mass_properties.hpp"
 #include "support/byte_order.hpp"
 #include "support/solids.hpp"
 

@@ -9,10 +9,10 @@
 #include <optional>
 #include <string>
 
-#include "pgamesh/mesh/mass_properties.hpp"
-#include "pgamesh/mesh/read_mesh.hpp"
-#include "pgamesh/mesh/stl_ascii_mass_properties.hpp"
-#include "pgamesh/mesh/write_mesh.hpp"
+#include "pgamesh/io/read_mesh.hpp"
+#include "pgamesh/io/write_mesh.hpp"
+#include "pgamesh/mesh/mass/mass_properties.hpp"
+#include "pgamesh/mesh/mass/stl_ascii_mass_properties.hpp"
 #include "support/same_topology.hpp"
 #include "support/solids.hpp"
 #ifdef PGAMESH_HAVE_GMP

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "pgamesh/mesh/topology.hpp"
+#include "pgamesh/mesh/topology/topology.hpp"
 #include "topology_test_meshes.hpp"
 
 namespace pgamesh {

@@ -4,8 +4,8 @@
 
 #include <cmath>
 
-#include "pgamesh/mesh/orientation.hpp"
-#include "pgamesh/mesh/topology.hpp"
+#include "pgamesh/mesh/topology/orientation.hpp"
+#include "pgamesh/mesh/topology/topology.hpp"
 #include "topology_test_meshes.hpp"
 
 namespace pgamesh {

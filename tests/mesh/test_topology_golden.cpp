@@ -5,8 +5,8 @@
 #include <gtest/gtest.h>
 
 #include "pgamesh/geometry/gap.hpp"
-#include "pgamesh/mesh/read_mesh.hpp"
-#include "pgamesh/mesh/topology.hpp"
+#include "pgamesh/io/read_mesh.hpp"
+#include "pgamesh/mesh/topology/topology.hpp"
 #include "support/golden.hpp"
 #include "support/golden_mesh.hpp"
 

@@ -6,9 +6,9 @@
 
 #include <cmath>
 
-#include "pgamesh/mesh/orientation.hpp"
-#include "pgamesh/mesh/read_mesh.hpp"
-#include "pgamesh/mesh/topology.hpp"
+#include "pgamesh/io/read_mesh.hpp"
+#include "pgamesh/mesh/topology/orientation.hpp"
+#include "pgamesh/mesh/topology/topology.hpp"
 #include "support/golden.hpp"
 
 namespace pgamesh {

@@ -13,12 +13,12 @@
 #include <random>
 #include <string>
 
-#include "pgamesh/mesh/mapped_file.hpp"
+#include "pgamesh/io/mapped_file.hpp"
+#include "pgamesh/io/read_mesh.hpp"
 #include "pgamesh/mesh/primitives.hpp"
-#include "pgamesh/mesh/read_mesh.hpp"
-#include "pgamesh/mesh/topology.hpp"
-#include "pgamesh/mesh/triangle_topology.hpp"
-#include "pgamesh/mesh/welded_triangles.hpp"
+#include "pgamesh/mesh/topology/topology.hpp"
+#include "pgamesh/mesh/topology/triangle_topology.hpp"
+#include "pgamesh/mesh/weld/welded_triangles.hpp"
 #include "support/golden.hpp"
 #include "support/read_helpers.hpp"
 #include "support/same_topology.hpp"

@@ -6,8 +6,8 @@
 #include <random>
 #include <stdexcept>
 
-#include "pgamesh/mesh/topology.hpp"
-#include "pgamesh/mesh/weld.hpp"
+#include "pgamesh/mesh/topology/topology.hpp"
+#include "pgamesh/mesh/weld/weld.hpp"
 #include "topology_test_meshes.hpp"
 
 namespace pgamesh {

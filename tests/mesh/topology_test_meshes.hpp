@@ -8,7 +8,7 @@
 #include <set>
 #include <vector>
 
-#include "pgamesh/mesh/mesh.hpp"
+#include "pgamesh/core/mesh.hpp"
 
 namespace pgamesh::test {
 

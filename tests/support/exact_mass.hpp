@@ -10,9 +10,9 @@
 
 #include <array>
 
-#include "pgamesh/algebra/vec3.hpp"
+#include "pgamesh/core/mesh.hpp"
+#include "pgamesh/core/vec3.hpp"
 #include "pgamesh/geometry/body_moments.hpp"
-#include "pgamesh/mesh/mesh.hpp"
 
 namespace pgamesh::test {
 

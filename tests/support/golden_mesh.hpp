@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "pgamesh/mesh/mesh.hpp"
+#include "pgamesh/core/mesh.hpp"
 #include "support/golden.hpp"
 
 namespace pgamesh::test {

@@ -12,8 +12,8 @@
 #include <string_view>
 #include <vector>
 
-#include "pgamesh/input_error.hpp"
-#include "pgamesh/mesh/read_mesh.hpp"
+#include "pgamesh/core/input_error.hpp"
+#include "pgamesh/io/read_mesh.hpp"
 
 namespace pgamesh::test {
 

@@ -8,8 +8,8 @@
 #include <cstring>
 #include <vector>
 
-#include "pgamesh/mesh/mass_properties.hpp"
-#include "pgamesh/mesh/topology.hpp"
+#include "pgamesh/mesh/mass/mass_properties.hpp"
+#include "pgamesh/mesh/topology/topology.hpp"
 
 namespace pgamesh::test {
 

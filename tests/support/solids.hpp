@@ -5,8 +5,8 @@
 
 #include <functional>
 
-#include "pgamesh/algebra/vec3.hpp"
-#include "pgamesh/mesh/mesh.hpp"
+#include "pgamesh/core/mesh.hpp"
+#include "pgamesh/core/vec3.hpp"
 
 namespace pgamesh::test {
 

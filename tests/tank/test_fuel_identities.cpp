@@ -58,8 +58,9 @@ TEST(FuelIdentities, RandomPlanesThroughRealMeshes) {
   if (dir.empty()) GTEST_SKIP() << "../shared/meshes is absent";
   for (const char* name : {"/npm/bunny.obj", "/mayavi2/shuttle.obj"}) {
     SCOPED_TRACE(name);
-    const Tank t = make_tank(pgamesh::test::load_obj_file(dir + name));
-    ASSERT_TRUE(is_gaugeable(t)) << "gap " << t.gap_area << " volume " << t.volume;
+    const pgamesh::Mesh mesh = pgamesh::test::load_obj_file(dir + name);
+    const Tank t = make_tank(mesh);
+    ASSERT_TRUE(tank_fitness(mesh, t).fit) << "gap " << t.gap_area << " volume " << t.volume;
     check_identities(t, 50, 11);
   }
 }

@@ -355,7 +355,7 @@ describe('fuel', () => {
     const { id } = await (await upload(open, 'open.obj')).json();
     const r = await getJson(`/api/mesh/${id}/fuel?level=0.5`);
     assert.equal(r.status, 422);
-    assert.match(r.body.error, /^open\.obj: the mesh is open/);
+    assert.match(r.body.error, /^open\.obj: not a closed, outward-oriented tank; open: 3 boundary edges/);
     const inside = tetrahedronObj.replace('f 1 3 2', 'f 1 2 3').replace('f 1 2 4', 'f 1 4 2')
       .replace('f 1 4 3', 'f 1 3 4').replace('f 2 3 4', 'f 2 4 3');
     const inv = await (await upload(inside, 'inside-out.obj')).json();

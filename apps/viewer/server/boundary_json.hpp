@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "pgamesh/mesh/topology.hpp"
+#include "pgamesh/mesh/topology/topology.hpp"
 
 namespace pgamesh::viewer {
 

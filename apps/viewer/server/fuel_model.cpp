@@ -7,12 +7,6 @@ namespace pgamesh::viewer {
 
 namespace {
 
-std::string fmt(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
-  return buf;
-}
-
 std::shared_ptr<const FuelModel> build(const StoredMesh& stored) {
   auto model = std::make_shared<FuelModel>();
   try {
@@ -22,16 +16,11 @@ std::shared_ptr<const FuelModel> build(const StoredMesh& stored) {
     return model;
   }
   const tank::Tank& t = model->tank;
-  // The same test and words as `pgamesh fuel` (tank::is_gaugeable: closed within 1e-9 of the
-  // area, positive volume).
-  if (!tank::is_gaugeable(t)) {
-    if (t.gap_area > 1e-9 * t.area)
-      model->problem = stored.name + ": the mesh is open (gap area " + fmt(t.gap_area) + ", " +
-                       fmt(t.gap_area / t.area) +
-                       " of its area): fuel needs a closed, outward-oriented tank";
-    else
-      model->problem = stored.name + ": the mesh is inside out or flat (signed volume " +
-                       fmt(t.volume) + "): fuel needs a closed, outward-oriented tank";
+  // The rule of `pgamesh fuel` (tank::tank_fitness), with its reasons.
+  const tank::TankFitness fitness = tank::tank_fitness(stored.mesh, t);
+  if (!fitness.fit) {
+    model->problem = stored.name + ": not a closed, outward-oriented tank";
+    for (const auto& problem : fitness.problems) model->problem += "; " + problem;
     return model;
   }
   model->index = std::make_unique<tank::FuelIndex>(model->tank);

@@ -2,7 +2,7 @@
 
 #include <charconv>
 
-#include "pgamesh/mesh/read_mesh.hpp"
+#include "pgamesh/io/read_mesh.hpp"
 
 namespace pgamesh::viewer {
 

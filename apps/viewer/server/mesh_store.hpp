@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "pgamesh/mesh/mesh.hpp"
+#include "pgamesh/core/mesh.hpp"
 
 namespace pgamesh::viewer {
 

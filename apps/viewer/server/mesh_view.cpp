@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <cstring>
 
-#include "pgamesh/mesh/mesh_format.hpp"
+#include "pgamesh/io/mesh_format.hpp"
 
 namespace pgamesh::viewer {
 

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "mesh_store.hpp"
-#include "pgamesh/algebra/vec3.hpp"
+#include "pgamesh/core/vec3.hpp"
 
 namespace pgamesh::viewer {
 

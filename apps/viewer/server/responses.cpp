@@ -3,7 +3,7 @@
 #include <charconv>
 #include <cmath>
 
-#include "pgamesh/input_error.hpp"
+#include "pgamesh/core/input_error.hpp"
 
 namespace pgamesh::viewer {
 

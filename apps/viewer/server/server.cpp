@@ -20,9 +20,9 @@
 #include "fuel_routes.hpp"
 #include "mesh_store.hpp"
 #include "mesh_view.hpp"
-#include "pgamesh/input_error.hpp"
-#include "pgamesh/mesh/mass_properties.hpp"
-#include "pgamesh/mesh/topology.hpp"
+#include "pgamesh/core/input_error.hpp"
+#include "pgamesh/mesh/mass/mass_properties.hpp"
+#include "pgamesh/mesh/topology/topology.hpp"
 #include "props_report.hpp"
 #include "responses.hpp"
 
@@ -130,26 +130,26 @@ void add_routes(httplib::Server& svr, const ServerOptions& options, const AssetT
             }
           });
 
-  svr.Get(R"(/api/mesh/([fu][0-9]{1,18})/props)", [&store](const httplib::Request& req,
-                                                           httplib::Response& res) {
-    cli::PropsOptions options;
-    if (req.has_param("density")) {
-      double density = 0;
-      if (!parse_number(req.get_param_value("density"), density) || density < 0)
-        return send_error(res, 400, "density must be a finite number >= 0");
-      options.mass.density = density;
-    }
-    if (auto m = find_mesh(store, req.matches[1], res)) {
-      try {
-        // The same report and JSON as `pgamesh props --json` (apps/cli/props_report.hpp).
-        send_raw_json(res, cli::props_json(cli::props_of_mesh(m->mesh, m->source, options)));
-      } catch (const std::invalid_argument& e) {
-        send_error(res, 422, m->name + ": " + e.what());
-      } catch (const std::out_of_range& e) {
-        send_error(res, 422, m->name + ": " + e.what());
-      }
-    }
-  });
+  svr.Get(R"(/api/mesh/([fu][0-9]{1,18})/props)",
+          [&store](const httplib::Request& req, httplib::Response& res) {
+            AnalysisOptions options;
+            if (req.has_param("density")) {
+              double density = 0;
+              if (!parse_number(req.get_param_value("density"), density) || density < 0)
+                return send_error(res, 400, "density must be a finite number >= 0");
+              options.mass.density = density;
+            }
+            if (auto m = find_mesh(store, req.matches[1], res)) {
+              try {
+                // The same report and JSON as `pgamesh props --json` (apps/cli/props_report.hpp).
+                send_raw_json(res, cli::props_json(analyze_mesh(m->mesh, m->source, options)));
+              } catch (const std::invalid_argument& e) {
+                send_error(res, 422, m->name + ": " + e.what());
+              } catch (const std::out_of_range& e) {
+                send_error(res, 422, m->name + ": " + e.what());
+              }
+            }
+          });
 
   // The boundary edges to draw (at most kMaxBoundarySegments of them) and the holes' loops.
   svr.Get(R"(/api/mesh/([fu][0-9]{1,18})/boundary)",

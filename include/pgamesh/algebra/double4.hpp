@@ -9,7 +9,7 @@
 
 #include <cmath>
 
-#include "pgamesh/algebra/vec3.hpp"
+#include "pgamesh/core/vec3.hpp"
 
 #if defined(__SSE2__)
 #include <emmintrin.h>

@@ -22,7 +22,7 @@
 
 #include "pgamesh/algebra/double4.hpp"
 #include "pgamesh/algebra/pga3.hpp"
-#include "pgamesh/algebra/vec3.hpp"
+#include "pgamesh/core/vec3.hpp"
 #include "pgamesh/geometry/carrier.hpp"
 
 namespace pgamesh {

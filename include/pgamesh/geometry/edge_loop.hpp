@@ -7,7 +7,7 @@
 #pragma once
 
 #include "pgamesh/algebra/pga3.hpp"
-#include "pgamesh/algebra/vec3.hpp"
+#include "pgamesh/core/vec3.hpp"
 
 namespace pgamesh {
 

@@ -12,7 +12,7 @@
 // to the apex q (the fan's tetrahedra about q are flat), which is how the ambiguity is reported.
 #pragma once
 
-#include "pgamesh/algebra/vec3.hpp"
+#include "pgamesh/core/vec3.hpp"
 #include "pgamesh/geometry/body_moments.hpp"
 
 namespace pgamesh {

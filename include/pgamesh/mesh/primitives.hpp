@@ -2,7 +2,7 @@
 // examples and benchmarks. Every solid is centred on the origin with its axis along z.
 #pragma once
 
-#include "pgamesh/mesh/mesh.hpp"
+#include "pgamesh/core/mesh.hpp"
 
 namespace pgamesh {
 

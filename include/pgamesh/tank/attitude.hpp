@@ -8,7 +8,7 @@
 // tank: for a level up of +z, up = (sin θ, sin φ cos θ, cos φ cos θ).
 #pragma once
 
-#include "pgamesh/algebra/vec3.hpp"
+#include "pgamesh/core/vec3.hpp"
 
 namespace pgamesh::tank {
 

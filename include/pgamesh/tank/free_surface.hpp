@@ -9,7 +9,7 @@
 
 #include <array>
 
-#include "pgamesh/algebra/vec3.hpp"
+#include "pgamesh/core/vec3.hpp"
 #include "pgamesh/geometry/body_moments.hpp"
 #include "pgamesh/tank/fuel_plane.hpp"
 

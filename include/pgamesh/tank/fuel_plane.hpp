@@ -7,7 +7,7 @@
 #include <string>
 
 #include "pgamesh/algebra/pga3.hpp"
-#include "pgamesh/algebra/vec3.hpp"
+#include "pgamesh/core/vec3.hpp"
 
 namespace pgamesh::tank {
 

@@ -4,7 +4,7 @@
 // calls this.
 #pragma once
 
-#include "pgamesh/algebra/vec3.hpp"
+#include "pgamesh/core/vec3.hpp"
 #include "pgamesh/geometry/body_moments.hpp"
 #include "pgamesh/tank/free_surface.hpp"
 

@@ -6,11 +6,13 @@
 #include <array>
 #include <cstdint>
 #include <limits>
+#include <string>
 #include <vector>
 
-#include "pgamesh/algebra/vec3.hpp"
+#include "pgamesh/core/mesh.hpp"
+#include "pgamesh/core/vec3.hpp"
 #include "pgamesh/geometry/body_moments.hpp"
-#include "pgamesh/mesh/mesh.hpp"
+#include "pgamesh/mesh/topology/topology.hpp"
 
 namespace pgamesh::tank {
 
@@ -33,31 +35,20 @@ struct Tank {
 /// std::invalid_argument for an empty mesh, an index out of range or a non-finite coordinate.
 Tank make_tank(const Mesh& mesh);
 
-/// The bounding box of some vertices, grown one at a time: its centre is a reference point near
-/// them (ERRATA §6).
-struct VertexBox {
-  Vec3d lower{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
-              std::numeric_limits<double>::infinity()};
-  Vec3d upper = -lower;
-
-  void add(Vec3d v) {
-    for (int i = 0; i < 3; ++i) {
-      lower[i] = std::min(lower[i], v[i]);
-      upper[i] = std::max(upper[i], v[i]);
-    }
-  }
-  bool empty() const { return !(lower.x <= upper.x); }
-  Vec3d center() const { return (lower + upper) / 2.0; }
-};
-
 /// Lowest and highest value of up·v over the vertices (the empty and full levels).
 struct LevelRange {
   double lowest = 0, highest = 0;
 };
 LevelRange level_range(const Tank& tank, Vec3d unit_up);
 
-/// Whether the tank is fit for gauging: closed within `relative_gap` (gap area / wall area) and
-/// with a positive volume (outward orientation).
-bool is_gaugeable(const Tank& tank, double relative_gap = 1e-9);
+/// Whether a mesh is fit to be gauged as a tank — the one rule of `pgamesh fuel`, the viewer and
+/// the bindings: closed, consistently oriented and a valid volume by the topology report of
+/// `pgamesh check` (analyze_topology), and a positive signed volume (outward orientation).
+struct TankFitness {
+  bool fit = false;
+  TopologyReport topology;            // the mesh's topology report
+  std::vector<std::string> problems;  // why not fit, in plain words (empty when fit)
+};
+TankFitness tank_fitness(const Mesh& mesh, const Tank& tank);
 
 }  // namespace pgamesh::tank

@@ -10,7 +10,7 @@
 
 #include <tuple>
 
-#include "pgamesh/algebra/vec3.hpp"
+#include "pgamesh/core/vec3.hpp"
 
 namespace pgamesh::pga3 {
 

@@ -10,7 +10,7 @@
 // 16-component product.
 #pragma once
 
-#include "pgamesh/algebra/vec3.hpp"
+#include "pgamesh/core/vec3.hpp"
 
 namespace pgamesh::pga3::detail {
 

@@ -1,0 +1,54 @@
+// The library's front door: analyse a mesh file — mass properties, the topology report and what the
+// reader learned about the source — choosing the fastest strategy for the format and the options
+// itself. Every strategy gives the same bits (docs/architecture.md, "One front door"); the CLI, the
+// viewer's server and the bindings call these functions and only format their result.
+#pragma once
+
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "pgamesh/core/mesh.hpp"
+#include "pgamesh/mesh/mass/mass_properties.hpp"
+#include "pgamesh/mesh/topology/topology.hpp"
+
+namespace pgamesh {
+
+struct AnalysisOptions {
+  MassOptions mass;
+  bool topology = true;  // false: no weld and edge pass (closedness is then unknown)
+  TopologyOptions topology_options;
+  MeshFormat format = MeshFormat::unknown;  // forced reader family (unknown: from the content)
+};
+
+struct Analysis {
+  std::string file;
+  MeshFormat format = MeshFormat::unknown;
+  bool single_precision = false;  // the coordinates were float32 (binary STL, float PLY)
+  bool streamed = false;          // accumulated straight from the file, no Mesh built
+  MassProperties mass;
+  std::optional<TopologyReport> topology;  // absent when not requested
+  // Whether the volume, centre of mass and inertia describe a solid: false for an open,
+  // inconsistently oriented, inward or flat mesh, absent when unknown for want of topology.
+  std::optional<bool> volume_valid;
+  std::vector<std::string> reasons;   // why the volume is not valid, in plain words
+  std::vector<std::string> warnings;  // reader repairs, float32 precision, …
+  bool density_from_mass = false;     // the density was derived from options.mass.mass
+};
+
+// Reads the file at `path` ("-" for standard input) and analyses it. A binary STL is never read
+// into a Mesh: without topology its records are summed as they are read; with the exact weld they
+// are welded straight from the file. Throws InputError (naming the file and the position) for
+// unreadable input and std::invalid_argument for bad options.
+Analysis analyze_file(const std::string& path, const AnalysisOptions& options = {});
+
+// The same for bytes already in memory (an upload); `name` names them in errors and the result.
+Analysis analyze_bytes(std::span<const char> bytes, const std::string& name,
+                       const AnalysisOptions& options = {});
+
+// The analysis of a mesh already read, described by `source`.
+Analysis analyze_mesh(const Mesh& mesh, const MeshSource& source,
+                      const AnalysisOptions& options = {});
+
+}  // namespace pgamesh

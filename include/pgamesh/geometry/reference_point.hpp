@@ -1,0 +1,20 @@
+// The point about which a mesh's carriers are accumulated. PGA leaves the origin free, so sums are
+// formed from coordinates relative to a point near the mesh: that keeps every digit however far
+// the mesh lies from the coordinate origin (ERRATA §6). Mass properties, topology and fuel slicing
+// all take it from here.
+#pragma once
+
+#include <span>
+
+#include "pgamesh/core/mesh.hpp"
+#include "pgamesh/core/vec3.hpp"
+
+namespace pgamesh {
+
+// The centre of the bounding box of the mesh's vertices (the origin for a mesh without vertices).
+Vec3d reference_point(const Mesh& mesh);
+
+// The same point for a mesh whose vertices are all a reader has kept (ply_mass_properties.hpp).
+Vec3d reference_point(std::span<const Vec3d> vertices);
+
+}  // namespace pgamesh

@@ -1,0 +1,42 @@
+// Reading meshes: STL (ASCII and binary), OBJ, PLY (ASCII, binary little/big endian) and OFF, with
+// the format detected from the content (docs/formats.md). Vertices are kept as given (no welding;
+// STL gives three fresh vertices per facet) and faces as polygons (no triangulation). Bad input is
+// an InputError naming the file, the line:column or byte offset, and the problem.
+#pragma once
+
+#include <span>
+#include <string>
+#include <string_view>
+
+#include "pgamesh/core/mesh.hpp"
+
+namespace pgamesh {
+
+// Reads the mesh file at `path` (memory-mapped; "-" reads standard input). `format` forces a
+// reader family (unknown = detect from the content). Fills `source` (path, format, precision, OBJ
+// group count, warnings about repairs) when given.
+Mesh read_mesh(const std::string& path, MeshSource* source = nullptr,
+               MeshFormat format = MeshFormat::unknown);
+
+// Reads a mesh from bytes already in memory; `name` is the file name used in errors. With
+// `release_pages` — only for the bytes of a read-only file mapping (MappedFile::mapped()) — the
+// reader gives the pages it has parsed back to the kernel as it goes (madvise MADV_DONTNEED), so
+// that the peak memory is the mesh plus a few MiB of the file; the bytes stay readable.
+Mesh read_mesh_bytes(std::span<const char> bytes, const std::string& name,
+                     MeshSource* source = nullptr, MeshFormat format = MeshFormat::unknown,
+                     bool release_pages = false);
+
+// The format of `bytes` by content: binary STL by size arithmetic (84 + 50 × count == size, even
+// when the header begins with "solid"), "ply" + format line, an OFF keyword, "solid" for ASCII STL,
+// OBJ statements; an unrecognised binary file is reported as a (broken) binary STL so that its
+// reader explains the size mismatch. unknown for empty or unrecognised text.
+MeshFormat detect_format(std::span<const char> bytes);
+
+// The format named by a --format option: "stl", "stl-ascii", "stl-binary", "obj", "ply",
+// "ply-ascii", "ply-binary-little-endian" (or "ply-le"), "ply-binary-big-endian" (or "ply-be"),
+// "off" (case-insensitive); unknown for anything else, including "auto". A forced format picks the
+// reader family: ASCII vs binary STL is still decided by size arithmetic, and a PLY's own header
+// states its encoding.
+MeshFormat format_from_name(std::string_view name);
+
+}  // namespace pgamesh

@@ -1,0 +1,30 @@
+// Writing meshes in every format the readers accept. Text formats print each double with the
+// shortest representation that reads back to the same bits (std::to_chars, equivalent to %.17g
+// for round trips), so text round trips are bit-exact; binary STL is float32 by definition.
+#pragma once
+
+#include <string>
+
+#include "pgamesh/core/mesh.hpp"
+
+namespace pgamesh {
+
+struct WriteOptions {
+  // PLY: store coordinates as float32 instead of float64 (text formats always keep full doubles).
+  bool single_precision = false;
+  // STL: the solid name (ASCII) / header text (binary, truncated to 80 bytes).
+  std::string solid_name = "pgamesh";
+};
+
+// The bytes of `mesh` in `format` (stl_ascii, stl_binary, obj, ply_ascii, ply_binary_le,
+// ply_binary_be, off). STL holds triangles only: a polygon with n > 3 corners is written as the
+// fan (v0, vi, vi+1), which keeps its vector area and the signed volume it bounds exactly. Throws
+// std::invalid_argument for MeshFormat::unknown or corner indices outside the vertex array.
+std::string write_mesh_bytes(const Mesh& mesh, MeshFormat format, const WriteOptions& options = {});
+
+// Writes write_mesh_bytes(mesh, format, options) to `path`; throws std::runtime_error naming the
+// path when it cannot be written.
+void write_mesh(const Mesh& mesh, const std::string& path, MeshFormat format,
+                const WriteOptions& options = {});
+
+}  // namespace pgamesh

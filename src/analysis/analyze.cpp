@@ -1,0 +1,205 @@
+#include "pgamesh/analysis/analyze.hpp"
+
+#include <optional>
+#include <utility>
+
+#include "pgamesh/core/bounding_box.hpp"
+#include "pgamesh/core/input_error.hpp"
+#include "pgamesh/io/mapped_file.hpp"
+#include "pgamesh/io/read_mesh.hpp"
+#include "pgamesh/io/stl_binary.hpp"
+#include "pgamesh/mesh/mass/ply_mass_properties.hpp"
+#include "pgamesh/mesh/mass/stl_ascii_mass_properties.hpp"
+#include "pgamesh/mesh/mass/stl_mass_properties.hpp"
+#include "pgamesh/mesh/topology/ply_topology.hpp"
+#include "pgamesh/mesh/topology/triangle_topology.hpp"
+#include "pgamesh/mesh/weld/welded_triangles.hpp"
+
+namespace pgamesh {
+
+namespace {
+
+// Whether the figures describe a solid, and why not.
+void judge(Analysis& r) {
+  if (r.topology) {
+    r.volume_valid = r.topology->volume_valid;
+    if (!r.topology->volume_valid)
+      r.reasons.insert(r.reasons.end(), r.topology->notes.begin(), r.topology->notes.end());
+  }
+  if (r.mass.volume == 0) {
+    r.volume_valid = false;
+    r.reasons.push_back("zero volume: no centre of mass or inertia");
+  } else if (r.mass.volume < 0) {
+    r.volume_valid = false;
+    r.reasons.push_back(
+        "negative volume: the faces are oriented inward (clockwise seen from outside); the "
+        "figures are those of the mesh as given, not abs()'d (pgamesh check --fix-orientation "
+        "repairs the orientation)");
+  }
+  if (!r.topology && r.volume_valid.value_or(true))
+    r.reasons.push_back("topology not computed (--no-topology): closedness unknown");
+}
+
+}  // namespace
+
+namespace {
+
+// The report without the topology: mass properties, the reader's and their warnings.
+Analysis mass_report(MassProperties mass, const MeshSource& source,
+                        const AnalysisOptions& options) {
+  Analysis r;
+  r.file = source.path;
+  r.format = source.format;
+  r.single_precision = source.single_precision;
+  r.density_from_mass = options.mass.mass.has_value();
+  r.mass = std::move(mass);
+  r.warnings = source.warnings;
+  r.warnings.insert(r.warnings.end(), r.mass.warnings.begin(), r.mass.warnings.end());
+  return r;
+}
+
+Analysis mass_report(const Mesh& mesh, const MeshSource& source, const AnalysisOptions& options) {
+  return mass_report(mass_properties(mesh, options.mass, &source), source, options);
+}
+
+// The report of a PLY file without topology, its faces summed as they are read
+// (ply_mass_properties.hpp), or nullopt for a file that path declines or finds fault with: the
+// careful reader then reads it again and reports exactly what it reports.
+std::optional<Analysis> summed_ply_report(std::span<const char> bytes, const std::string& name,
+                                             const AnalysisOptions& options, bool release_pages) {
+  const MeshFormat format =
+      options.format == MeshFormat::unknown ? detect_format(bytes) : options.format;
+  if (options.topology || (format != MeshFormat::ply_ascii && format != MeshFormat::ply_binary_le &&
+                           format != MeshFormat::ply_binary_be))
+    return std::nullopt;
+  try {
+    MeshSource source;
+    auto mass = ply_mass_properties(bytes, name, source, options.mass, release_pages);
+    if (!mass) return std::nullopt;
+    Analysis r = mass_report(std::move(*mass), source, options);
+    judge(r);
+    return r;
+  } catch (const InputError&) {
+    return std::nullopt;
+  }
+}
+
+// The report of a binary PLY triangle mesh with exact-weld topology, its faces re-read from the
+// file rather than stored (ply_topology.hpp), or nullopt for a file that pass declines or finds
+// fault with: the careful reader then reads it again and reports exactly what it reports.
+std::optional<Analysis> ply_topology_report(std::span<const char> bytes, const std::string& name,
+                                               const AnalysisOptions& options, bool release_pages) {
+  const MeshFormat format =
+      options.format == MeshFormat::unknown ? detect_format(bytes) : options.format;
+  if (!options.topology || options.topology_options.weld_tolerance != 0 ||
+      (format != MeshFormat::ply_binary_le && format != MeshFormat::ply_binary_be))
+    return std::nullopt;
+  try {
+    MeshSource source;
+    auto props = ply_triangle_props(bytes, name, source, options.mass, options.topology_options,
+                                    release_pages);
+    if (!props) return std::nullopt;
+    Analysis r = mass_report(std::move(props->mass), source, options);
+    r.topology = std::move(props->topology);
+    judge(r);
+    return r;
+  } catch (const InputError&) {
+    return std::nullopt;
+  }
+}
+
+}  // namespace
+
+Analysis analyze_mesh(const Mesh& mesh, const MeshSource& source, const AnalysisOptions& options) {
+  Analysis r = mass_report(mesh, source, options);
+  if (options.topology) r.topology = analyze_topology(mesh, options.topology_options);
+  judge(r);
+  return r;
+}
+
+namespace {
+
+// The report of `bytes`. A binary STL is not read into a Mesh: without topology its mass
+// properties are streamed from the records; with exact-weld topology it is welded straight from
+// the records (welded_triangles.hpp), and both the mass properties and the topology come from the
+// welded triangles — the same figures as reading the mesh first, in a quarter of the memory.
+// `file` is the open descriptor of the read-only file mapping that `bytes` are (MappedFile), or −1
+// for bytes of our own: with a mapping, the binary STL passes read the records from the file
+// instead of touching the mapping (BinaryStlView::file), and the other readers give the mapping's
+// pages back as they pass.
+Analysis analyze(std::span<const char> bytes, const std::string& name,
+                     const AnalysisOptions& options, int file) {
+  const bool release_records = file >= 0;
+  const bool stl_allowed = options.format == MeshFormat::unknown ||
+                           options.format == MeshFormat::stl_binary ||
+                           options.format == MeshFormat::stl_ascii;
+  const bool weld_from_records = options.topology && options.topology_options.weld_tolerance == 0 &&
+                                 options.format != MeshFormat::stl_ascii;
+  if ((!options.topology || weld_from_records) && stl_allowed) {
+    if (auto view = binary_stl_view(bytes, name)) {
+      view->file = file;
+      Analysis r;
+      r.file = name;
+      r.format = MeshFormat::stl_binary;
+      r.single_precision = true;
+      r.density_from_mass = options.mass.mass.has_value();
+      if (!options.topology) {
+        r.streamed = true;
+        r.mass = binary_stl_mass_properties(*view, name, options.mass, release_records);
+      } else {
+        const WeldedTriangles welded = weld_binary_stl(*view, name, release_records);
+        const Vec3d reference = bounding_box(welded.positions).centre();  // reference_point()
+        WeldedTriangleProps props = analyze_welded_triangles(welded, reference, options.mass,
+                                                             options.topology_options, true);
+        r.mass = std::move(props.mass);
+        r.topology = std::move(props.topology);
+      }
+      r.warnings = r.mass.warnings;
+      judge(r);
+      return r;
+    }
+    // ASCII STL of plain triangular facets: parsed and summed in one pass; anything unusual
+    // (polygons, errors) goes to the careful reader below.
+    if (!options.topology &&
+        (options.format != MeshFormat::unknown || detect_format(bytes) == MeshFormat::stl_ascii)) {
+      if (auto mass = ascii_stl_mass_properties(bytes, name, options.mass, release_records)) {
+        Analysis r;
+        r.file = name;
+        r.format = MeshFormat::stl_ascii;
+        r.streamed = true;
+        r.density_from_mass = options.mass.mass.has_value();
+        r.mass = std::move(*mass);
+        r.warnings = r.mass.warnings;
+        judge(r);
+        return r;
+      }
+    }
+  }
+  if (auto r = summed_ply_report(bytes, name, options, release_records)) return std::move(*r);
+  if (auto r = ply_topology_report(bytes, name, options, release_records)) return std::move(*r);
+  // The careful readers, releasing the file's pages as they parse (release_records); the mesh is
+  // then handed to the topology pass, which frees it once welded (topology.hpp).
+  MeshSource source;
+  Mesh mesh = read_mesh_bytes(bytes, name, &source, options.format, release_records);
+  source.path = name;
+  Analysis r = mass_report(mesh, source, options);
+  if (options.topology) r.topology = analyze_topology(std::move(mesh), options.topology_options);
+  judge(r);
+  return r;
+}
+
+}  // namespace
+
+Analysis analyze_bytes(std::span<const char> bytes, const std::string& name,
+                           const AnalysisOptions& options) {
+  return analyze(bytes, name, options, -1);
+}
+
+Analysis analyze_file(const std::string& path, const AnalysisOptions& options) {
+  // MappedFile maps regular files (descriptor() ≥ 0); standard input and pipes are read into a
+  // buffer of its own.
+  const MappedFile file = MappedFile::open(path);
+  return analyze(file.bytes(), path, options, file.descriptor());
+}
+
+}  // namespace pgamesh

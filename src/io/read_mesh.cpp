@@ -1,0 +1,158 @@
+#include "pgamesh/io/read_mesh.hpp"
+
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+
+#include "detail/memory/huge_pages.hpp"
+#include "detail/memory/page_release.hpp"
+#include "io/readers.hpp"
+#include "io/text_cursor.hpp"
+#include "pgamesh/core/input_error.hpp"
+#include "pgamesh/io/mapped_file.hpp"
+#include "pgamesh/io/stl_binary.hpp"
+
+namespace pgamesh {
+
+namespace {
+
+std::uint32_t le32(const char* p) {
+  const auto* u = reinterpret_cast<const unsigned char*>(p);
+  return std::uint32_t{u[0]} | std::uint32_t{u[1]} << 8 | std::uint32_t{u[2]} << 16 |
+         std::uint32_t{u[3]} << 24;
+}
+
+// No control bytes other than whitespace in the first KiB: text formats may hold non-UTF-8 bytes
+// (>= 0x80) in names and comments, binary STL headers and records almost always hold NUL bytes.
+bool looks_like_text(std::span<const char> bytes) {
+  const std::size_t n = std::min<std::size_t>(bytes.size(), 1024);
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto c = static_cast<unsigned char>(bytes[i]);
+    if (c < 0x20 && c != '\t' && c != '\n' && c != '\r' && c != '\v' && c != '\f') return false;
+    if (c == 0x7f) return false;
+  }
+  return true;
+}
+
+// [ST][C][N][4][n]OFF: the header keywords of the OFF family (geomview).
+bool is_off_keyword(std::string_view w) {
+  auto eat = [&](std::string_view prefix) {
+    if (w.substr(0, prefix.size()) == prefix) w.remove_prefix(prefix.size());
+  };
+  eat("ST");
+  eat("C");
+  eat("N");
+  eat("4");
+  eat("n");
+  return w == "OFF";
+}
+
+bool is_obj_keyword(std::string_view w) {
+  static constexpr std::string_view keys[] = {
+      "v",    "vt",   "vn",     "vp",     "f",      "g",      "o",    "s",
+      "l",    "p",    "mtllib", "usemtl", "cstype", "deg",    "curv", "curv2",
+      "surf", "bmat", "step",   "lod",    "maplib", "usemap", "mg"};
+  return std::find(std::begin(keys), std::end(keys), w) != std::end(keys);
+}
+
+bool is_stl_family(MeshFormat f) {
+  return f == MeshFormat::stl_ascii || f == MeshFormat::stl_binary;
+}
+bool is_ply_family(MeshFormat f) {
+  return f == MeshFormat::ply_ascii || f == MeshFormat::ply_binary_le ||
+         f == MeshFormat::ply_binary_be;
+}
+
+}  // namespace
+
+MeshFormat detect_format(std::span<const char> bytes) {
+  if (bytes.empty()) return MeshFormat::unknown;
+  if (bytes.size() >= stl_header_bytes &&
+      stl_header_bytes + stl_record_bytes * std::uint64_t{le32(bytes.data() + 80)} == bytes.size())
+    return MeshFormat::stl_binary;
+
+  const std::string name;
+  detail::TextCursor c(bytes, name);
+  if (bytes.size() >= 3 && std::memcmp(bytes.data(), "\xEF\xBB\xBF", 3) == 0) c.p += 3;  // BOM
+  c.skip_space();
+  const bool text = looks_like_text(bytes);
+  // Leading comment lines are allowed in OBJ and OFF; look at the first statement.
+  for (int lines = 0; lines < 10000 && !c.at_end() && *c.p == '#'; ++lines) {
+    c.skip_line();
+    c.skip_space();
+  }
+  const std::string_view w = c.word();
+  if (w == "ply") {
+    c.skip_line();
+    c.skip_space();
+    if (c.word() == "format") {
+      const std::string_view enc = c.word();
+      if (enc == "binary_little_endian") return MeshFormat::ply_binary_le;
+      if (enc == "binary_big_endian") return MeshFormat::ply_binary_be;
+    }
+    return MeshFormat::ply_ascii;  // the PLY reader reports a bad format line
+  }
+  if (is_off_keyword(w)) return MeshFormat::off;
+  if (text && detail::same_word(w, "solid")) return MeshFormat::stl_ascii;
+  if (text && is_obj_keyword(w)) return MeshFormat::obj;
+  if (!text) return MeshFormat::stl_binary;  // its reader explains the size mismatch
+  return MeshFormat::unknown;
+}
+
+MeshFormat format_from_name(std::string_view name) {
+  std::string n(name);
+  for (char& ch : n)
+    if (ch >= 'A' && ch <= 'Z') ch = static_cast<char>(ch - 'A' + 'a');
+  if (n == "stl" || n == "stl-binary" || n == "stl_binary") return MeshFormat::stl_binary;
+  if (n == "stl-ascii" || n == "stl_ascii") return MeshFormat::stl_ascii;
+  if (n == "obj") return MeshFormat::obj;
+  if (n == "ply" || n == "ply-ascii" || n == "ply_ascii") return MeshFormat::ply_ascii;
+  if (n == "ply-binary-little-endian" || n == "ply-le" || n == "ply_binary_le")
+    return MeshFormat::ply_binary_le;
+  if (n == "ply-binary-big-endian" || n == "ply-be" || n == "ply_binary_be")
+    return MeshFormat::ply_binary_be;
+  if (n == "off") return MeshFormat::off;
+  return MeshFormat::unknown;
+}
+
+Mesh read_mesh_bytes(std::span<const char> bytes, const std::string& name, MeshSource* source,
+                     MeshFormat format, bool release_pages) {
+  MeshSource local;
+  MeshSource& src = source ? *source : local;
+  src = MeshSource{};
+  src.path = name;
+  Mesh mesh;
+  if (std::all_of(bytes.begin(), bytes.end(), detail::is_space))  // stops at the first data byte
+    throw InputError(name, detail::byte_position(0), "empty file: no mesh data");
+
+  const MeshFormat f = format == MeshFormat::unknown ? detect_format(bytes) : format;
+  if (is_stl_family(f)) {
+    if (binary_stl_view(bytes, name))
+      detail::read_stl_binary(bytes, name, mesh, src, release_pages);
+    else
+      detail::read_stl_ascii(bytes, name, mesh, src, release_pages);
+  } else if (is_ply_family(f)) {
+    detail::read_ply(bytes, name, mesh, src, release_pages);
+  } else if (f == MeshFormat::obj) {
+    detail::read_obj(bytes, name, mesh, src, release_pages);
+  } else if (f == MeshFormat::off) {
+    detail::read_off(bytes, name, mesh, src, release_pages);
+  } else {
+    throw InputError(name, detail::text_position(bytes.data(), bytes.data()),
+                     "unrecognised mesh format (expected STL, OBJ, PLY or OFF content)");
+  }
+  // The readers release in steps as they go; the last step and the first page (detection) too.
+  if (release_pages) detail::release_pages(bytes.data(), bytes.data() + bytes.size());
+  // And the untouched rest of the huge pages their reserved arrays ended in.
+  detail::release_unused_capacity(mesh.vertices);
+  detail::release_unused_capacity(mesh.corners);
+  detail::release_unused_capacity(mesh.face_offsets);
+  return mesh;
+}
+
+Mesh read_mesh(const std::string& path, MeshSource* source, MeshFormat format) {
+  const MappedFile file = MappedFile::open(path);
+  return read_mesh_bytes(file.bytes(), path, source, format, file.mapped());
+}
+
+}  // namespace pgamesh

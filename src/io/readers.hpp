@@ -1,0 +1,54 @@
+// Internal: one parser per format family, called by read_mesh_bytes() after detection. Each fills
+// an empty Mesh and the MeshSource fields it knows (format, precision, groups, warnings). With
+// `release_pages` (bytes of a read-only file mapping only) each gives the pages it has passed back
+// to the kernel as it goes (page_release.hpp).
+#pragma once
+
+#include <optional>
+#include <span>
+#include <string>
+
+#include "pgamesh/core/mesh.hpp"
+#include "pgamesh/geometry/body_moments.hpp"
+
+namespace pgamesh::detail {
+
+void read_stl_binary(std::span<const char> bytes, const std::string& name, Mesh& mesh,
+                     MeshSource& source, bool release_pages = false);
+void read_stl_ascii(std::span<const char> bytes, const std::string& name, Mesh& mesh,
+                    MeshSource& source, bool release_pages = false);
+void read_obj(std::span<const char> bytes, const std::string& name, Mesh& mesh, MeshSource& source,
+              bool release_pages = false);
+void read_ply(std::span<const char> bytes, const std::string& name, Mesh& mesh, MeshSource& source,
+              bool release_pages = false);
+void read_off(std::span<const char> bytes, const std::string& name, Mesh& mesh, MeshSource& source,
+              bool release_pages = false);
+
+// The boundary sums of a PLY file's faces about `reference` (reference_point of its vertices),
+// accumulated as mesh_boundary_sums accumulates them, and the face counts.
+struct PlyFaceSums {
+  BoundarySums sums;
+  Vec3d reference{};
+  std::uint64_t faces = 0, triangles = 0;  // as mass_properties() counts them
+};
+
+// read_ply without keeping the faces: the vertices are read into `mesh` (its face list stays
+// empty) and each face is summed as it is parsed. The same errors and source fields as read_ply.
+// Returns nullopt, having read no data, when the face element comes before the vertex element.
+std::optional<PlyFaceSums> read_ply_summing_faces(std::span<const char> bytes,
+                                                  const std::string& name, Mesh& mesh,
+                                                  MeshSource& source, bool release_pages = false);
+
+// A vertex count that fits the 32-bit corner indices of Mesh, or an error at `where`.
+inline constexpr std::uint64_t max_vertices = 0xFFFFFFFFull;
+
+// How many elements to reserve for a declared `count` when each element needs at least
+// `min_bytes` of the `remaining` input: a declared count is never trusted for allocation before
+// the data could hold it.
+inline std::size_t bounded_reserve(std::uint64_t count, std::size_t remaining,
+                                   std::size_t min_bytes) {
+  const std::uint64_t cap = remaining / (min_bytes ? min_bytes : 1);
+  return static_cast<std::size_t>(count < cap ? count : cap);
+}
+
+}  // namespace pgamesh::detail
