@@ -1,6 +1,82 @@
-// libFuzzer harness: the STL readers (forced STL: ASCII or binary by size) and the binary view.
+// libFuzzer harness: the STL readers (forced STL: ASCII or binary by size) and the binary view;
+// and the two consumers of the one ASCII STL grammar (io/stl_ascii_grammar.hpp) against each
+// other on every input: the summing consumer of `props --no-topology` must refuse exactly what the
+// Mesh reader refuses, with the same message and position, and on everything the reader accepts
+// give mass_properties() of the read mesh bit for bit, with the same counts and warnings — in one
+// piece, and cut into pieces of a few dozen bytes parsed on two threads.
+#include <optional>
+#include <string>
+
 #include "fuzz_common.hpp"
+#include "io/readers.hpp"
+#include "mesh/mass/stl_ascii_sums.hpp"
+
+using namespace pgamesh;
+
+namespace {
+
+bool same(double a, double b) {
+  return std::memcmp(&a, &b, sizeof a) == 0;
+}
+bool same(Vec3d a, Vec3d b) {
+  return same(a.x, b.x) && same(a.y, b.y) && same(a.z, b.z);
+}
+
+bool same_mass(const MassProperties& a, const MassProperties& b) {
+  bool ok = a.faces == b.faces && a.triangles == b.triangles && a.vertices == b.vertices &&
+            a.warnings == b.warnings && same(a.reference_point, b.reference_point) &&
+            same(a.center_of_mass, b.center_of_mass) && same(a.area, b.area) &&
+            same(a.volume, b.volume) && same(a.mass, b.mass) && same(a.density, b.density) &&
+            same(a.gap_area, b.gap_area) && same(a.carrier_sum.e0, b.carrier_sum.e0) &&
+            same(a.carrier_sum.normal(), b.carrier_sum.normal());
+  for (int i = 0; i < 3; ++i) {
+    ok = ok && same(a.principal.moments[i], b.principal.moments[i]);
+    for (int j = 0; j < 3; ++j)
+      ok = ok && same(a.inertia_com[i][j], b.inertia_com[i][j]) &&
+           same(a.inertia_origin[i][j], b.inertia_origin[i][j]);
+  }
+  return ok;
+}
+
+bool same_error(const InputError& a, const InputError& b) {
+  return std::string(a.what()) == b.what() && a.where().has_line == b.where().has_line &&
+         a.where().line == b.where().line && a.where().column == b.where().column &&
+         a.where().byte_offset == b.where().byte_offset;
+}
+
+}  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  return pgamesh::fuzz::read_bytes(data, size, pgamesh::MeshFormat::stl_binary);
+  fuzz::read_bytes(data, size, MeshFormat::stl_binary);
+
+  const std::span<const char> bytes{reinterpret_cast<const char*>(data), size};
+  Mesh mesh;
+  MeshSource read_source;
+  std::optional<InputError> read_error;
+  try {
+    detail::read_stl_ascii(bytes, "fuzz", mesh, read_source);
+  } catch (const InputError& e) {
+    read_error = e;
+  }
+  std::optional<MassProperties> read_mass;
+  if (!read_error) {
+    fuzz::check_mesh(mesh);
+    read_mass = mass_properties(mesh, {}, &read_source);
+  }
+  for (const std::size_t piece_bytes : {detail::stl_ascii_piece_bytes, std::size_t{48}}) {
+    MassOptions options;
+    options.threads = 2;
+    MeshSource source;
+    try {
+      const MassProperties summed =
+          ascii_stl_mass_properties(bytes, "fuzz", source, options, false, piece_bytes);
+      fuzz::require(
+          read_mass.has_value());  // the summing consumer accepted what the reader rejects
+      fuzz::require(same_mass(summed, *read_mass));
+      fuzz::require(source.format == read_source.format && source.warnings == read_source.warnings);
+    } catch (const InputError& e) {
+      fuzz::require(read_error.has_value() && same_error(e, *read_error));
+    }
+  }
+  return 0;
 }

@@ -5,11 +5,12 @@
 #include "detail/memory/huge_pages.hpp"
 #include "detail/memory/page_release.hpp"
 #include "io/readers.hpp"
+#include "io/stl_ascii_grammar.hpp"
+#include "io/stl_binary.hpp"
 #include "io/stl_record_blocks.hpp"
 #include "io/text_cursor.hpp"
 #include "pgamesh/core/input_error.hpp"
 #include "pgamesh/io/read_mesh.hpp"
-#include "pgamesh/io/stl_binary.hpp"
 
 namespace pgamesh {
 
@@ -86,90 +87,35 @@ void read_stl_binary(std::span<const char> bytes, const std::string& name, Mesh&
   }
 }
 
-// solid NAME / { facet normal N / outer loop / vertex X Y Z (3 or more) / endloop / endfacet }
-// / endsolid NAME, keywords case-insensitive, several solids in a row allowed. Normals are skipped
-// unread (NaN normals of degenerate facets are common and harmless).
+namespace {
+
+// The consumer of the ASCII STL grammar that builds the Mesh: three (or more) fresh vertices a
+// facet, in file order.
+struct MeshFacets {
+  Mesh& mesh;
+  void vertex(const Vec3d& v) {
+    mesh.corners.push_back(static_cast<std::uint32_t>(mesh.vertices.size()));
+    mesh.vertices.push_back(v);
+  }
+  void end_facet(std::size_t) {
+    mesh.face_offsets.push_back(static_cast<std::uint32_t>(mesh.corners.size()));
+  }
+};
+
+}  // namespace
+
+// The grammar and its repairs are in stl_ascii_grammar.hpp.
 void read_stl_ascii(std::span<const char> bytes, const std::string& name, Mesh& mesh,
                     MeshSource& source, bool release_pages) {
-  TextCursor c(bytes, name);
-  PageRelease release(bytes.data(), release_pages);
   source.format = MeshFormat::stl_ascii;
   // Typical exporters write 180-250 bytes a facet; reserve for 120 so that the arrays are never
   // reallocated (a copy that would double the peak). Unused reserve is untouched virtual memory.
   reserve_huge(mesh.vertices, bytes.size() / 40);
   reserve_huge(mesh.corners, bytes.size() / 40);
   reserve_huge(mesh.face_offsets, bytes.size() / 120 + 1);
-
-  auto expect = [&](const char* keyword) {
-    c.skip_space();
-    const char* at = c.p;
-    if (!same_word(c.word(), keyword))
-      c.fail(at, std::string("expected '") + keyword + "', found " + describe_at(at, c.end));
-  };
-
-  if (bytes.size() >= 3 && std::memcmp(bytes.data(), "\xEF\xBB\xBF", 3) == 0) c.p += 3;
-  expect("solid");
-  c.skip_line();  // the solid's name: any bytes
-  bool in_solid = true;
-  std::uint64_t polygons = 0;
-  const char* first_polygon = nullptr;
-  for (;;) {
-    release.passed(c.p);
-    c.skip_space();
-    if (c.at_end()) break;
-    const char* at = c.p;
-    const std::string_view w = c.word();
-    if (in_solid && same_word(w, "facet")) {
-      c.skip_line();  // "normal nx ny nz" is ignored: the vertex order is the truth
-      expect("outer");
-      expect("loop");
-      std::size_t n = 0;
-      for (;;) {
-        c.skip_space();
-        const char* vat = c.p;
-        const std::string_view vw = c.word();
-        if (same_word(vw, "vertex")) {
-          Vec3d v;
-          v.x = c.coordinate("x coordinate");
-          v.y = c.coordinate("y coordinate");
-          v.z = c.coordinate("z coordinate");
-          c.skip_blanks();
-          if (!c.at_eol()) c.fail(c.p, "unexpected " + describe_at(c.p, c.end) + " after vertex");
-          if (mesh.vertices.size() >= max_vertices)
-            c.fail(vat, "too many vertices for 32-bit indices");
-          mesh.corners.push_back(static_cast<std::uint32_t>(mesh.vertices.size()));
-          mesh.vertices.push_back(v);
-          ++n;
-        } else if (same_word(vw, "endloop")) {
-          break;
-        } else {
-          c.fail(vat, "expected 'vertex' or 'endloop', found " + describe_at(vat, c.end));
-        }
-      }
-      if (n < 3)
-        c.fail(at, "facet with " + std::to_string(n) + " vertices (a face needs at least 3)");
-      if (n > 3 && polygons++ == 0) first_polygon = at;
-      mesh.face_offsets.push_back(static_cast<std::uint32_t>(mesh.corners.size()));
-      expect("endfacet");
-    } else if (in_solid && same_word(w, "endsolid")) {
-      c.skip_line();
-      in_solid = false;
-    } else if (!in_solid && same_word(w, "solid")) {
-      c.skip_line();
-      in_solid = true;
-    } else {
-      c.fail(at, std::string("expected ") + (in_solid ? "'facet' or 'endsolid'" : "'solid'") +
-                     ", found " + describe_at(at, c.end));
-    }
-  }
-  if (in_solid)
-    source.warnings.push_back(name + ": missing 'endsolid' at the end (file truncated?)");
-  if (polygons) {
-    const InputPosition pos = text_position(c.begin, first_polygon);
-    source.warnings.push_back(name + ":" + std::to_string(pos.line) + ": " +
-                              std::to_string(polygons) +
-                              " facet(s) with more than 3 vertices kept as polygons");
-  }
+  MeshFacets out{mesh};
+  const StlAsciiState s = parse_ascii_stl(bytes, name, out, release_pages);
+  add_stl_ascii_warnings(s, bytes.data(), name, source.warnings);
 }
 
 }  // namespace detail

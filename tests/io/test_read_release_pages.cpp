@@ -7,14 +7,14 @@
 #include <cstring>
 #include <string>
 
+#include "io/stl_binary.hpp"
+#include "mesh/mass/stl_ascii_sums.hpp"
+#include "mesh/mass/stl_mass_properties.hpp"
 #include "pgamesh/core/input_error.hpp"
 #include "pgamesh/io/mapped_file.hpp"
 #include "pgamesh/io/mesh_format.hpp"
 #include "pgamesh/io/read_mesh.hpp"
-#include "pgamesh/io/stl_binary.hpp"
 #include "pgamesh/io/write_mesh.hpp"
-#include "pgamesh/mesh/mass/stl_ascii_mass_properties.hpp"
-#include "pgamesh/mesh/mass/stl_mass_properties.hpp"
 #include "support/same_topology.hpp"
 #include "support/solids.hpp"
 #include "support/temp_file.hpp"
@@ -156,30 +156,48 @@ TEST(ReadReleasePages, StlAsciiAndOffReadAsFromMemory) {
 TEST(ReadReleasePages, StreamedStlPassesReleaseAndSumTheSame) {
   const Mesh tri = test::triangulated(test::uv_sphere(1.5, 100, 150));
   const std::string ascii = write_mesh_bytes(tri, MeshFormat::stl_ascii);
-  {
-    const TempFile file("_release_fused_ascii.mesh", ascii);
+  // The summing consumer of ASCII STL releases each piece once parsed: the same figures and
+  // source as from memory and as the mesh read (a polygon facet at the end), and the same error
+  // (after released pages) as the reader's.
+  const std::size_t end = ascii.rfind("endsolid");
+  const std::string quad = ascii.substr(0, end) +
+                           "facet normal 0 0 1\nouter loop\nvertex 0 0 5\nvertex 1 0 5\n"
+                           "vertex 1 1 5\nvertex 0 1 5\nendloop\nendfacet\n" +
+                           ascii.substr(end);
+  for (const std::string& text : {ascii, quad}) {
+    const TempFile file("_release_summed_ascii.mesh", text);
     const MappedFile mapped = MappedFile::open(file.path());
-    const auto released = ascii_stl_mass_properties(mapped.bytes(), "f", {}, true);
-    const auto kept = ascii_stl_mass_properties({ascii.data(), ascii.size()}, "f", {});
-    ASSERT_TRUE(released && kept);
-    expect_same_mass(*released, *kept);
-    EXPECT_EQ(released->faces, tri.face_count());
-    EXPECT_EQ(std::memcmp(mapped.bytes().data(), ascii.data(), ascii.size()), 0);
+    MeshSource released_source, kept_source, read_source;
+    const MassProperties released =
+        ascii_stl_mass_properties(mapped.bytes(), "f", released_source, {}, true);
+    const MassProperties kept =
+        ascii_stl_mass_properties({text.data(), text.size()}, "f", kept_source, {});
+    expect_same_mass(released, kept);
+    expect_same_source(released_source, kept_source);
+    const Mesh m = read_mesh_bytes(mapped.bytes(), "f", &read_source, MeshFormat::unknown, true);
+    expect_same_mass(released, mass_properties(m, {}, &read_source));
+    expect_same_source(released_source, read_source);
+    EXPECT_EQ(released.faces, tri.face_count() + (text == quad ? 1 : 0));
+    EXPECT_EQ(std::memcmp(mapped.bytes().data(), text.data(), text.size()), 0);
   }
   {
-    // A polygon facet at the end: the fused pass declines after releasing, the careful reader
-    // then reads the released pages back.
-    const std::size_t end = ascii.rfind("endsolid");
-    const std::string quad = ascii.substr(0, end) +
-                             "facet normal 0 0 1\nouter loop\nvertex 0 0 5\nvertex 1 0 5\n"
-                             "vertex 1 1 5\nvertex 0 1 5\nendloop\nendfacet\n" +
-                             ascii.substr(end);
-    const TempFile file("_release_fused_quad.mesh", quad);
+    const std::string bad = ascii.substr(0, end) + "facet x\n";
+    const TempFile file("_release_summed_ascii_bad.mesh", bad);
     const MappedFile mapped = MappedFile::open(file.path());
-    EXPECT_FALSE(ascii_stl_mass_properties(mapped.bytes(), "f", {}, true));
-    const Mesh m = read_mesh_bytes(mapped.bytes(), "f", nullptr, MeshFormat::unknown, true);
-    EXPECT_EQ(m.face_count(), tri.face_count() + 1);
-    EXPECT_EQ(m.face_size(m.face_count() - 1), 4u);
+    std::string summed_error, read_error;
+    try {
+      MeshSource source;
+      ascii_stl_mass_properties(mapped.bytes(), "f", source, {}, true);
+    } catch (const InputError& e) {
+      summed_error = e.what();
+    }
+    try {
+      read_mesh_bytes({bad.data(), bad.size()}, "f");
+    } catch (const InputError& e) {
+      read_error = e.what();
+    }
+    EXPECT_FALSE(read_error.empty());
+    EXPECT_EQ(summed_error, read_error);
   }
   const std::string binary = write_mesh_bytes(tri, MeshFormat::stl_binary);
   const TempFile file("_release_streamed_binary.mesh", binary);

@@ -1,52 +1,41 @@
-// The fused ASCII STL path: the same figures as reading the mesh first (bit for bit on a small
-// file, to 1e-12 on a large one, whose sums are added in another order), independent of the thread
-// count, held to exact rational arithmetic and closed forms, and declining (nullopt) for everything
-// the careful reader must see: polygons, syntax errors, NaN, empty solids — also when the trouble
-// is in a later piece.
+// The summing consumer of the ASCII STL grammar (`props --no-topology`) against the Mesh it reads:
+// for every text, on any thread count and any cut into pieces, ascii_stl_mass_properties() is
+// mass_properties() of read_mesh_bytes() bit for bit, with the same source fields — or both throw
+// the same InputError (message and position). The cases cover the repairs (polygons, a missing
+// endsolid, several solids, letter case, CRLF, a byte order mark), the errors, and troubles in a
+// later piece of a large file.
 #include <gtest/gtest.h>
 
-#include <cmath>
+#include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
+#include "mesh/mass/stl_ascii_sums.hpp"
+#include "pgamesh/core/input_error.hpp"
 #include "pgamesh/io/read_mesh.hpp"
 #include "pgamesh/io/write_mesh.hpp"
 #include "pgamesh/mesh/mass/mass_properties.hpp"
-#include "pgamesh/mesh/mass/stl_ascii_mass_properties.hpp"
 #include "support/same_topology.hpp"
 #include "support/solids.hpp"
-#ifdef PGAMESH_HAVE_GMP
-#include "support/exact_mass.hpp"
-#endif
 
-using namespace pgamesh;
-using namespace pgamesh::test;
-
+namespace pgamesh {
 namespace {
 
-std::optional<MassProperties> fused(const std::string& text, unsigned threads = 0) {
-  MassOptions o;
-  o.threads = threads;
-  return ascii_stl_mass_properties({text.data(), text.size()}, "mem.stl", o);
-}
-
-MassProperties careful(const std::string& text) {
-  MeshSource source;
-  const Mesh m = read_mesh_bytes({text.data(), text.size()}, "mem.stl", &source);
-  return mass_properties(m, {}, &source);
-}
+using test::triangulated;
+using test::uv_sphere;
 
 std::string ascii_stl(const Mesh& m) {
   return write_mesh_bytes(triangulated(m), MeshFormat::stl_ascii);
 }
 
 // A sphere written as ASCII STL, larger than several pieces.
-const std::string& large_sphere_text() {
+const std::string& large_sphere() {
   static const std::string text = ascii_stl(uv_sphere(2.5, 60, 120));
   return text;
 }
 
-const char* const tetra_facets =
+const std::string tetra_facets =
     "facet normal 0 0 -1\n outer loop\n  vertex 0 0 0\n  vertex 0 1 0\n  vertex 1 0 0\n"
     " endloop\nendfacet\n"
     "facet normal 0 -1 0\n outer loop\n  vertex 0 0 0\n  vertex 1 0 0\n  vertex 0 0 1\n"
@@ -56,159 +45,160 @@ const char* const tetra_facets =
     "facet normal 1 1 1\n outer loop\n  vertex 1 0 0\n  vertex 0 1 0\n  vertex 0 0 1\n"
     " endloop\nendfacet\n";
 
-}  // namespace
+const std::string quad_facet =
+    "facet normal 0 0 1\n outer loop\n  vertex 0 0 5\n  vertex 1 0 5\n  vertex 1 1 5\n"
+    "  vertex 0 1 5\n endloop\nendfacet\n";
 
-TEST(StlAsciiMass, SmallFileEqualsReadMeshBitForBit) {
-  // One piece, every vertex in the reference box: the same point and the same order of sums.
-  const std::string text = ascii_stl(uv_sphere(1.5, 10, 16));
-  const auto f = fused(text);
-  ASSERT_TRUE(f);
-  test::expect_same_mass(*f, careful(text));
-  EXPECT_GT(f->volume, 0);
-  EXPECT_TRUE(f->warnings.empty());
+// `text` with `insert` put in front of the first 'facet' line at or after `fraction` of it.
+std::string inserted(std::string text, double fraction, const std::string& insert) {
+  const auto at = text.find("\nfacet", static_cast<std::size_t>(fraction * text.size()));
+  return text.insert(at + 1, insert);
 }
 
-TEST(StlAsciiMass, BoxMatchesClosedForms) {
-  // [0,2]×[0,3]×[0,5]: V = 30, centre (1, 1.5, 2.5), I_xx = m (b² + c²) / 12.
-  const auto f = fused(ascii_stl(box_mesh(2, 3, 5)));
-  ASSERT_TRUE(f);
-  EXPECT_EQ(f->triangles, 12u);
-  EXPECT_EQ(f->vertices, 36u);
-  EXPECT_NEAR(f->volume, 30, 1e-13);
-  EXPECT_NEAR(f->area, 2 * (6 + 10 + 15), 1e-13);
-  EXPECT_NEAR(length(f->center_of_mass - Vec3d{1, 1.5, 2.5}), 0, 1e-14);
-  EXPECT_NEAR(f->inertia_com[0][0], 30 * (9 + 25) / 12.0, 1e-12);
-  EXPECT_NEAR(f->inertia_com[1][1], 30 * (4 + 25) / 12.0, 1e-12);
-  EXPECT_NEAR(f->inertia_com[2][2], 30 * (4 + 9) / 12.0, 1e-12);
-  EXPECT_NEAR(f->inertia_com[0][1], 0, 1e-12);
-  EXPECT_NEAR(f->gap_area, 0, 1e-13);
+// `text` with the first vertex line at or after `fraction` of it replaced by `line`.
+std::string replaced_vertex(std::string text, double fraction, const std::string& line) {
+  const auto at = text.find("vertex ", static_cast<std::size_t>(fraction * text.size()));
+  return text.replace(at, text.find('\n', at) - at, line);
 }
 
-TEST(StlAsciiMass, LargeFileIsThreadIndependentAndMatchesReadMesh) {
-  const std::string& text = large_sphere_text();
-  ASSERT_GT(text.size(), 4 * stl_ascii_piece_bytes);
-  const auto a = fused(text, 1), b = fused(text, 2), c = fused(text, 5);
-  ASSERT_TRUE(a && b && c);
-  test::expect_same_mass(*a, *b);
-  test::expect_same_mass(*a, *c);
-  const MassProperties r = careful(text);
-  EXPECT_EQ(a->triangles, r.triangles);
-  EXPECT_NEAR(a->volume, r.volume, 1e-12 * r.volume);
-  EXPECT_NEAR(a->area, r.area, 1e-12 * r.area);
-  EXPECT_NEAR(length(a->center_of_mass - r.center_of_mass), 0, 1e-13);
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j)
-      EXPECT_NEAR(a->inertia_com[i][j], r.inertia_com[i][j], 1e-12 * r.inertia_com[0][0]);
-  // The sampled reference point lies inside the sphere's box.
-  EXPECT_LT(length(a->reference_point), 2.5);
-}
+struct Case {
+  const char* name;
+  std::function<std::string()> text;
+};
 
-#ifdef PGAMESH_HAVE_GMP
-TEST(StlAsciiMass, FarFromOriginAgreesWithExactRationals) {
-  // Text round trips are bit-exact, so the exact sums of the mesh's own doubles are the reference.
-  const Mesh m = triangulated(transformed(uv_sphere(1.25, 40, 80), [](Vec3d p) {
-    return p + Vec3d{1e6, -1e6, 1e6};
-  }));
-  const std::string text = write_mesh_bytes(m, MeshFormat::stl_ascii);
-  ASSERT_GT(text.size(), stl_ascii_piece_bytes);
-  const auto f = fused(text);
-  ASSERT_TRUE(f);
-  const ExactSummary e = exact_summary(m);
-  EXPECT_NEAR(f->volume, e.volume, 1e-12 * e.volume);
-  for (int i = 0; i < 3; ++i) EXPECT_NEAR(f->center_of_mass[i], e.center_of_mass[i], 1e-12 * 1.25);
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j)
-      EXPECT_NEAR(f->inertia_com[i][j], e.inertia_com[i][j], 1e-12 * e.inertia_com[0][0]);
-}
-#endif
+const Case cases[] = {
+    {"SmallSphere", [] { return ascii_stl(uv_sphere(1.5, 10, 16)); }},
+    {"Box", [] { return ascii_stl(test::box_mesh(2, 3, 5)); }},
+    {"LargeSphere", [] { return large_sphere(); }},
+    {"FarFromOrigin",
+     [] {
+       return ascii_stl(test::transformed(uv_sphere(1.25, 40, 80), [](Vec3d p) {
+         return p + Vec3d{1e6, -1e6, 1e6};
+       }));
+     }},
+    {"AnyCaseCrlfSeveralSolids",
+     [] {
+       return "SOLID a\r\n" + tetra_facets +
+              "ENDSOLID a\r\nsolid b\r\n"
+              "FACET NORMAL 0 0 0\r\n OUTER LOOP\r\n  VERTEX 5 5 5\r\n  VERTEX 6 5 5\r\n"
+              "  VERTEX 5 6 5\r\n ENDLOOP\r\nENDFACET\r\nendsolid b\r\n";
+     }},
+    {"ByteOrderMark", [] { return "\xEF\xBB\xBFsolid t\n" + tetra_facets + "endsolid t\n"; }},
+    {"MissingEndsolid", [] { return "solid t\n" + tetra_facets; }},
+    {"MissingEndsolidLarge",
+     [] { return large_sphere().substr(0, large_sphere().rfind("endsolid")); }},
+    {"Polygons",
+     [] { return "solid t\n" + quad_facet + tetra_facets + quad_facet + "endsolid\n"; }},
+    {"PolygonInALaterPiece", [] { return inserted(large_sphere(), 0.6, quad_facet); }},
+    {"SolidsSplitAcrossPieces",
+     [] {
+       std::string text = large_sphere();
+       for (double f = 0.1; f < 0.95; f += 0.13) text = inserted(text, f, "endsolid p\nsolid p\n");
+       return text;
+     }},
+    {"EmptySolid", [] { return std::string("solid t\nendsolid t\n"); }},
+    {"MissingEndsolidOneLongLine",
+     [] {
+       std::string text = "solid x";
+       while (text.size() < 3 * detail::stl_ascii_piece_bytes) text += " facet vertex 1 2 3";
+       return text;
+     }},
+    {"NaN", [] { return "solid t\nfacet normal 0 0 1\n outer loop\n  vertex 0 0 nan\n"; }},
+    {"TruncatedInAFacet",
+     [] { return "solid t\n" + tetra_facets + "facet normal 0 0 1\n outer loop\n  vertex 0 0\n"; }},
+    {"FacetOutsideASolid",
+     [] { return "solid t\n" + tetra_facets + "endsolid t\n" + tetra_facets; }},
+    {"StrayVertex", [] { return "solid t\n" + tetra_facets + "  vertex 1 2 3\n"; }},
+    {"MisspeltKeyword",
+     [] { return "solid t\n" + tetra_facets.substr(0, tetra_facets.size() - 9) + "endfacetx\n"; }},
+    {"OutOfRange", [] { return std::string("solid t\nfacet\n outer loop\n  vertex 0 0 1e999\n"); }},
+    {"FourNumbers", [] { return std::string("solid t\nfacet\n outer loop\n  vertex 0 0 1 2\n"); }},
+    {"TwoVertices",
+     [] {
+       return std::string(
+           "solid t\nfacet\n outer loop\n vertex 0 0 0\n vertex 1 0 0\n endloop\n"
+           "endfacet\nendsolid\n");
+     }},
+    {"NotStl", [] { return std::string("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"); }},
+    {"NaNInTheLastPiece", [] { return replaced_vertex(large_sphere(), 0.99, "vertex 1 nan 2"); }},
+    {"ErrorInAMiddlePiece", [] { return replaced_vertex(large_sphere(), 0.5, "vertex 1 2"); }},
+    {"FacetAfterEndsolidInAMiddlePiece",
+     [] { return inserted(large_sphere(), 0.5, "endsolid p\n"); }},
+};
 
-TEST(StlAsciiMass, AnyCaseCrlfAndSeveralSolidsAsTheReader) {
-  const std::string text =
-      std::string("SOLID a\r\n") + tetra_facets + "ENDSOLID a\r\nsolid b\r\n" +
-      "FACET NORMAL 0 0 0\r\n OUTER LOOP\r\n  VERTEX 5 5 5\r\n  VERTEX 6 5 5\r\n"
-      "  VERTEX 5 6 5\r\n ENDLOOP\r\nENDFACET\r\nendsolid b\r\n";
-  const auto f = fused(text);
-  ASSERT_TRUE(f);
-  EXPECT_EQ(f->triangles, 5u);
-  EXPECT_DOUBLE_EQ(f->volume, careful(text).volume);
-  EXPECT_NEAR(f->area, careful(text).area, 1e-15);
-  EXPECT_TRUE(f->warnings.empty());
-}
+class StlAsciiSums : public ::testing::TestWithParam<Case> {};
 
-TEST(StlAsciiMass, MissingEndsolidIsTheReadersWarning) {
-  const std::string text = std::string("solid t\n") + tetra_facets;
-  const auto f = fused(text);
-  ASSERT_TRUE(f);
-  EXPECT_NEAR(f->volume, 1.0 / 6, 1e-16);
-  MeshSource source;
-  read_mesh_bytes({text.data(), text.size()}, "mem.stl", &source);
-  ASSERT_EQ(f->warnings.size(), 1u);
-  ASSERT_EQ(source.warnings.size(), 1u);
-  EXPECT_EQ(f->warnings[0], source.warnings[0]);
-}
-
-TEST(StlAsciiMass, DeclinesWhatTheCarefulReaderMustSee) {
-  const std::string head = "solid t\n";
-  const std::string facet = tetra_facets;
-  const std::string quad =
-      "facet normal 0 0 1\n outer loop\n  vertex 0 0 0\n  vertex 1 0 0\n  vertex 1 1 0\n"
-      "  vertex 0 1 0\n endloop\nendfacet\n";
-  for (const std::string& text : {
-           head + facet + quad + "endsolid t\n",                              // a polygon
-           head + "facet normal 0 0 1\n outer loop\n  vertex 0 0 nan\n",      // NaN
-           head + facet + "facet normal 0 0 1\n outer loop\n  vertex 0 0\n",  // truncated
-           head + facet + "endsolid t\n" + facet,                     // facet outside a solid
-           head + facet + "  vertex 1 2 3\n",                         // stray vertex
-           head + facet.substr(0, facet.size() - 9) + "endfacetx\n",  // misspelt keyword
-           head + "facet\n outer loop\n  vertex 0 0 1e999\n",         // out of range
-           head + "facet\n outer loop\n  vertex 0 0 1 2\n",           // four numbers
-           head + "endsolid t\n",                                     // no facets
-           std::string("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"),       // not STL
-           std::string(""),
-           // A control byte in the first KiB: read_mesh_bytes takes it for a broken binary STL.
-           head + "facet normal \x03\n outer loop\n  vertex 0 0 0\n  vertex 1 0 0\n"
-                  "  vertex 0 1 0\n endloop\nendfacet\nendsolid t\n",
-       })
-    EXPECT_FALSE(fused(text)) << text;
-}
-
-TEST(StlAsciiMass, DeclinesALargeFileWithoutNewlines) {
-  // Several pieces' worth of one line: sampling and piece boundaries scan it once each.
-  std::string text = "solid x";
-  while (text.size() < 4 * stl_ascii_piece_bytes) text += " facet vertex 1 2 3";
-  EXPECT_FALSE(fused(text));
-  text += "\nendsolid x\n";
-  EXPECT_FALSE(fused(text));
-}
-
-TEST(StlAsciiMass, DeclinesTroubleInALaterPiece) {
-  const std::string& good = large_sphere_text();
-  ASSERT_TRUE(fused(good));
-  // A NaN in the last facet, and a quad in the middle: both many pieces after the first.
-  std::string nan_text = good;
-  const auto last = nan_text.rfind("vertex ") + 7;
-  nan_text.replace(last, nan_text.find(' ', last) - last, "nan");
-  EXPECT_FALSE(fused(nan_text));
-  std::string quad_text = good;
-  const auto mid = quad_text.find(" endloop", quad_text.size() / 2);
-  quad_text.insert(mid, "  vertex 0 0 0\n");
-  EXPECT_FALSE(fused(quad_text));
-  EXPECT_TRUE(read_mesh_bytes({quad_text.data(), quad_text.size()}, "q.stl").face_count() > 0);
-}
-
-TEST(StlAsciiMass, SolidsSplitAcrossPiecesStillSum) {
-  // endsolid / solid pairs between facets anywhere in a large file: the pieces agree on the state.
-  const std::string& good = large_sphere_text();
-  std::string text = good;
-  for (std::size_t at = text.size() / 7; at < text.size() - 1000; at += text.size() / 7) {
-    const auto facet = text.find("\nfacet", at);
-    text.insert(facet + 1, "endsolid part\nsolid part\n");
+TEST_P(StlAsciiSums, EqualMassPropertiesOfTheReadMeshBitForBit) {
+  const std::string text = GetParam().text();
+  const std::span<const char> bytes{text.data(), text.size()};
+  MeshSource read_source;
+  std::optional<MassProperties> read_mass;
+  std::optional<InputError> read_error;
+  try {
+    const Mesh m = read_mesh_bytes(bytes, "mem.stl", &read_source, MeshFormat::stl_ascii);
+    EXPECT_EQ(read_source.format, MeshFormat::stl_ascii);
+    read_mass = mass_properties(m, {}, &read_source);
+  } catch (const InputError& e) {
+    read_error = e;
   }
-  const auto a = fused(text);
-  ASSERT_TRUE(a);
-  const MassProperties r = careful(text);
-  EXPECT_EQ(a->triangles, r.triangles);
-  EXPECT_NEAR(a->volume, r.volume, 1e-12 * r.volume);
-  EXPECT_NEAR(a->area, r.area, 1e-12 * r.area);
-  EXPECT_TRUE(a->warnings.empty());
+  // The default pieces, and pieces of a few facets (every file then has several).
+  for (const std::size_t piece_bytes : {detail::stl_ascii_piece_bytes, std::size_t{300}})
+    for (const unsigned threads : {1u, 2u, 5u}) {
+      SCOPED_TRACE("piece bytes " + std::to_string(piece_bytes) + ", threads " +
+                   std::to_string(threads));
+      MassOptions options;
+      options.threads = threads;
+      MeshSource source;
+      try {
+        const MassProperties summed =
+            ascii_stl_mass_properties(bytes, "mem.stl", source, options, false, piece_bytes);
+        ASSERT_TRUE(read_mass) << "the reader rejects it: " << read_error->what();
+        test::expect_same_mass(summed, *read_mass);
+        EXPECT_EQ(source.format, read_source.format);
+        EXPECT_EQ(source.warnings, read_source.warnings);
+      } catch (const InputError& e) {
+        ASSERT_TRUE(read_error) << "only the summing consumer rejects it: " << e.what();
+        EXPECT_STREQ(e.what(), read_error->what());
+        EXPECT_EQ(e.file(), read_error->file());
+        EXPECT_EQ(e.where().has_line, read_error->where().has_line);
+        EXPECT_EQ(e.where().line, read_error->where().line);
+        EXPECT_EQ(e.where().column, read_error->where().column);
+        EXPECT_EQ(e.where().byte_offset, read_error->where().byte_offset);
+      }
+    }
 }
+
+INSTANTIATE_TEST_SUITE_P(Texts, StlAsciiSums, ::testing::ValuesIn(cases),
+                         [](const ::testing::TestParamInfo<Case>& info) {
+                           return std::string(info.param.name);
+                         });
+
+// The cases above reach what they are meant to: repairs are made, errors raised, and the large
+// texts are cut into several pieces.
+TEST(StlAsciiSums, CasesReachTheirPaths) {
+  EXPECT_GT(large_sphere().size(), 4 * detail::stl_ascii_piece_bytes);
+  auto warnings = [](const std::string& text) {
+    MeshSource source;
+    ascii_stl_mass_properties({text.data(), text.size()}, "mem.stl", source);
+    return source.warnings.size();
+  };
+  for (const Case& c : cases) {
+    const std::string name = c.name;
+    const std::string text = c.text();
+    const bool error = name == "NaN" || name == "TruncatedInAFacet" ||
+                       name == "FacetOutsideASolid" || name == "StrayVertex" ||
+                       name == "MisspeltKeyword" || name == "OutOfRange" || name == "FourNumbers" ||
+                       name == "TwoVertices" || name == "NotStl" || name == "NaNInTheLastPiece" ||
+                       name == "ErrorInAMiddlePiece" || name == "FacetAfterEndsolidInAMiddlePiece";
+    if (error) {
+      EXPECT_THROW(warnings(text), InputError) << name;
+    } else {
+      const std::size_t expected =
+          name.starts_with("Missing") || name.starts_with("Polygon") ? 1u : 0u;
+      EXPECT_EQ(warnings(text), expected) << name;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace pgamesh
