@@ -1,19 +1,22 @@
 #include "pgamesh/analysis/analyze.hpp"
 
+#include <algorithm>
 #include <optional>
 #include <utility>
 
+#include "detail/memory/page_release.hpp"
+#include "io/readers.hpp"
+#include "io/stl_binary.hpp"
+#include "io/text_cursor.hpp"
+#include "mesh/mass/stl_ascii_sums.hpp"
+#include "mesh/mass/stl_mass_properties.hpp"
+#include "mesh/topology/ply_topology.hpp"
+#include "mesh/topology/triangle_topology.hpp"
+#include "mesh/weld/welded_triangles.hpp"
 #include "pgamesh/core/bounding_box.hpp"
 #include "pgamesh/core/input_error.hpp"
 #include "pgamesh/io/mapped_file.hpp"
 #include "pgamesh/io/read_mesh.hpp"
-#include "pgamesh/io/stl_binary.hpp"
-#include "pgamesh/mesh/mass/ply_mass_properties.hpp"
-#include "pgamesh/mesh/mass/stl_ascii_mass_properties.hpp"
-#include "pgamesh/mesh/mass/stl_mass_properties.hpp"
-#include "pgamesh/mesh/topology/ply_topology.hpp"
-#include "pgamesh/mesh/topology/triangle_topology.hpp"
-#include "pgamesh/mesh/weld/welded_triangles.hpp"
 
 namespace pgamesh {
 
@@ -46,7 +49,7 @@ namespace {
 
 // The report without the topology: mass properties, the reader's and their warnings.
 Analysis mass_report(MassProperties mass, const MeshSource& source,
-                        const AnalysisOptions& options) {
+                     const AnalysisOptions& options) {
   Analysis r;
   r.file = source.path;
   r.format = source.format;
@@ -62,33 +65,41 @@ Analysis mass_report(const Mesh& mesh, const MeshSource& source, const AnalysisO
   return mass_report(mass_properties(mesh, options.mass, &source), source, options);
 }
 
-// The report of a PLY file without topology, its faces summed as they are read
-// (ply_mass_properties.hpp), or nullopt for a file that path declines or finds fault with: the
-// careful reader then reads it again and reports exactly what it reports.
+// The report of a PLY file without topology, its faces summed as the PLY reader parses them (its
+// summing consumer, read_ply_summing_faces in readers.hpp) and never stored: the figures of
+// mass_properties() on the mesh read_mesh_bytes() would read, bit for bit, and a malformed file
+// raises the reader's own error. nullopt for anything else: another format, topology wanted, a
+// blank file (read_mesh_bytes() reports it) or a file whose faces come before its vertices (the
+// reader declines it before reading any data; the Mesh path below reads it).
 std::optional<Analysis> summed_ply_report(std::span<const char> bytes, const std::string& name,
-                                             const AnalysisOptions& options, bool release_pages) {
+                                          const AnalysisOptions& options, bool release_pages) {
   const MeshFormat format =
       options.format == MeshFormat::unknown ? detect_format(bytes) : options.format;
-  if (options.topology || (format != MeshFormat::ply_ascii && format != MeshFormat::ply_binary_le &&
-                           format != MeshFormat::ply_binary_be))
+  if (options.topology ||
+      (format != MeshFormat::ply_ascii && format != MeshFormat::ply_binary_le &&
+       format != MeshFormat::ply_binary_be) ||
+      std::all_of(bytes.begin(), bytes.end(), detail::is_space))
     return std::nullopt;
-  try {
-    MeshSource source;
-    auto mass = ply_mass_properties(bytes, name, source, options.mass, release_pages);
-    if (!mass) return std::nullopt;
-    Analysis r = mass_report(std::move(*mass), source, options);
-    judge(r);
-    return r;
-  } catch (const InputError&) {
-    return std::nullopt;
-  }
+  MeshSource source;
+  source.path = name;
+  Mesh vertices;  // the vertices only
+  const auto sums = detail::read_ply_summing_faces(bytes, name, vertices, source, release_pages);
+  if (!sums) return std::nullopt;
+  // The last step and the header's page, as read_mesh_bytes() releases them.
+  if (release_pages) detail::release_pages(bytes.data(), bytes.data() + bytes.size());
+  Analysis r = mass_report(
+      mesh_mass_properties_from_sums(sums->sums, sums->reference, vertices.vertices, sums->faces,
+                                     sums->triangles, options.mass, source.single_precision),
+      source, options);
+  judge(r);
+  return r;
 }
 
 // The report of a binary PLY triangle mesh with exact-weld topology, its faces re-read from the
 // file rather than stored (ply_topology.hpp), or nullopt for a file that pass declines or finds
 // fault with: the careful reader then reads it again and reports exactly what it reports.
 std::optional<Analysis> ply_topology_report(std::span<const char> bytes, const std::string& name,
-                                               const AnalysisOptions& options, bool release_pages) {
+                                            const AnalysisOptions& options, bool release_pages) {
   const MeshFormat format =
       options.format == MeshFormat::unknown ? detect_format(bytes) : options.format;
   if (!options.topology || options.topology_options.weld_tolerance != 0 ||
@@ -128,7 +139,7 @@ namespace {
 // instead of touching the mapping (BinaryStlView::file), and the other readers give the mapping's
 // pages back as they pass.
 Analysis analyze(std::span<const char> bytes, const std::string& name,
-                     const AnalysisOptions& options, int file) {
+                 const AnalysisOptions& options, int file) {
   const bool release_records = file >= 0;
   const bool stl_allowed = options.format == MeshFormat::unknown ||
                            options.format == MeshFormat::stl_binary ||
@@ -158,21 +169,18 @@ Analysis analyze(std::span<const char> bytes, const std::string& name,
       judge(r);
       return r;
     }
-    // ASCII STL of plain triangular facets: parsed and summed in one pass; anything unusual
-    // (polygons, errors) goes to the careful reader below.
-    if (!options.topology &&
-        (options.format != MeshFormat::unknown || detect_format(bytes) == MeshFormat::stl_ascii)) {
-      if (auto mass = ascii_stl_mass_properties(bytes, name, options.mass, release_records)) {
-        Analysis r;
-        r.file = name;
-        r.format = MeshFormat::stl_ascii;
-        r.streamed = true;
-        r.density_from_mass = options.mass.mass.has_value();
-        r.mass = std::move(*mass);
-        r.warnings = r.mass.warnings;
-        judge(r);
-        return r;
-      }
+    // ASCII STL without topology: the reader's grammar hands the facets to a summing consumer
+    // instead of a Mesh, on every core (stl_ascii_sums.hpp): the figures, warnings and errors of
+    // the mesh path below, bit for bit.
+    if (!options.topology && detect_format(bytes) == MeshFormat::stl_ascii) {
+      MeshSource source;
+      source.path = name;
+      MassProperties mass =
+          ascii_stl_mass_properties(bytes, name, source, options.mass, release_records);
+      Analysis r = mass_report(std::move(mass), source, options);
+      r.streamed = true;
+      judge(r);
+      return r;
     }
   }
   if (auto r = summed_ply_report(bytes, name, options, release_records)) return std::move(*r);
@@ -191,7 +199,7 @@ Analysis analyze(std::span<const char> bytes, const std::string& name,
 }  // namespace
 
 Analysis analyze_bytes(std::span<const char> bytes, const std::string& name,
-                           const AnalysisOptions& options) {
+                       const AnalysisOptions& options) {
   return analyze(bytes, name, options, -1);
 }
 

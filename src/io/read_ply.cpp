@@ -13,11 +13,11 @@
 
 #include "detail/memory/huge_pages.hpp"
 #include "detail/memory/page_release.hpp"
+#include "geometry/chunked_sums.hpp"
 #include "io/ply_header.hpp"
 #include "io/readers.hpp"
 #include "io/text_cursor.hpp"
 #include "pgamesh/core/input_error.hpp"
-#include "pgamesh/geometry/chunked_sums.hpp"
 #include "pgamesh/geometry/face_sums.hpp"
 #include "pgamesh/geometry/reference_point.hpp"
 

@@ -1,28 +1,37 @@
-// ply_mass_properties, which sums a PLY's faces as it parses them and keeps no face list, against
-// the Mesh path (read_mesh_bytes, then mass_properties) field by field and bit for bit: ASCII,
-// binary little- and big-endian, float and double coordinates, uchar/int/uint list counts,
-// int/uint indices, extra properties and elements, triangles and polygons, closed and open meshes,
-// more faces than one chunk, the real meshes of ../shared/meshes written as PLY; the same
-// InputError text for truncated files, bad indices and NaN; declined when faces precede vertices.
+// The PLY reader's two consumers against each other, and the front door against the Mesh path:
+// one parametrised test. Each case is a set of PLY files — test meshes (closed, open, with defects,
+// repaired) in every encoding and type layout, real meshes, and malformed files — and for each
+// file
+//   * the summing consumer (read_ply_summing_faces: each face summed as it is parsed, no face
+//     list) gives mass_properties() of the Mesh consumer's mesh (read_ply) bit for bit, on any
+//     thread count, with the same source fields — or the same InputError text;
+//   * `props --no-topology` through the front door (analyze_bytes) gives mass_properties() of
+//     read_mesh_bytes() bit for bit — or the same InputError text.
+// The summing consumer declines (nullopt) only a file whose faces come before its vertices; the
+// front door then reads it into a Mesh.
 #include <gtest/gtest.h>
 
-#include <bit>
 #include <cmath>
-#include <cstring>
+#include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <limits>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "geometry/chunked_sums.hpp"
+#include "io/readers.hpp"
+#include "pgamesh/analysis/analyze.hpp"
 #include "pgamesh/core/input_error.hpp"
-#include "pgamesh/geometry/chunked_sums.hpp"
-#include "pgamesh/io/mapped_file.hpp"
 #include "pgamesh/io/read_mesh.hpp"
 #include "pgamesh/mesh/mass/mass_properties.hpp"
-#include "pgamesh/mesh/mass/ply_mass_properties.hpp"
+#include "pgamesh/mesh/topology/orientation.hpp"
 #include "support/byte_order.hpp"
+#include "support/file_bytes.hpp"
+#include "support/same_topology.hpp"
 #include "support/solids.hpp"
+#include "topology_test_meshes.hpp"
 
 namespace pgamesh {
 namespace {
@@ -104,59 +113,6 @@ std::string ply_bytes(const Mesh& m, const Layout& l) {
   return out;
 }
 
-// Doubles compared bit for bit (NaN included).
-bool same_bits(double a, double b) {
-  return std::memcmp(&a, &b, sizeof a) == 0;
-}
-
-void expect_same(const MassProperties& a, const MassProperties& b) {
-  EXPECT_EQ(a.faces, b.faces);
-  EXPECT_EQ(a.triangles, b.triangles);
-  EXPECT_EQ(a.vertices, b.vertices);
-  for (int k = 0; k < 3; ++k) {
-    EXPECT_TRUE(same_bits(a.reference_point[k], b.reference_point[k]));
-    EXPECT_TRUE(same_bits(a.center_of_mass[k], b.center_of_mass[k])) << k;
-    EXPECT_TRUE(same_bits(a.principal.moments[k], b.principal.moments[k])) << k;
-    for (int j = 0; j < 3; ++j) {
-      EXPECT_TRUE(same_bits(a.inertia_com[k][j], b.inertia_com[k][j])) << k << j;
-      EXPECT_TRUE(same_bits(a.inertia_origin[k][j], b.inertia_origin[k][j])) << k << j;
-    }
-  }
-  EXPECT_TRUE(same_bits(a.area, b.area)) << a.area << " vs " << b.area;
-  EXPECT_TRUE(same_bits(a.volume, b.volume)) << a.volume << " vs " << b.volume;
-  EXPECT_TRUE(same_bits(a.mass, b.mass));
-  EXPECT_TRUE(same_bits(a.density, b.density));
-  EXPECT_TRUE(same_bits(a.gap_area, b.gap_area));
-  EXPECT_TRUE(same_bits(a.carrier_sum.e0, b.carrier_sum.e0));
-  EXPECT_TRUE(same_bits(a.carrier_sum.e1, b.carrier_sum.e1));
-  EXPECT_TRUE(same_bits(a.carrier_sum.e2, b.carrier_sum.e2));
-  EXPECT_TRUE(same_bits(a.carrier_sum.e3, b.carrier_sum.e3));
-  EXPECT_EQ(a.warnings, b.warnings);
-}
-
-// The Mesh path's figures and source, on `threads` threads.
-MassProperties careful(const std::string& bytes, MeshSource& source, unsigned threads = 0) {
-  const Mesh m = read_mesh_bytes({bytes.data(), bytes.size()}, "mem.ply", &source);
-  MassOptions o;
-  o.threads = threads;
-  return mass_properties(m, o, &source);
-}
-
-// Both paths on `bytes`: the same figures and the same source. Returns the figures.
-MassProperties expect_paths_agree(const std::string& bytes) {
-  MeshSource careful_source, summed_source;
-  const MassProperties expected = careful(bytes, careful_source);
-  const auto summed = ply_mass_properties({bytes.data(), bytes.size()}, "mem.ply", summed_source);
-  EXPECT_TRUE(summed.has_value());
-  if (!summed) return expected;
-  expect_same(*summed, expected);
-  EXPECT_EQ(summed_source.format, careful_source.format);
-  EXPECT_EQ(summed_source.single_precision, careful_source.single_precision);
-  EXPECT_EQ(summed_source.warnings, careful_source.warnings);
-  EXPECT_EQ(summed_source.path, careful_source.path);
-  return *summed;
-}
-
 std::vector<Layout> all_layouts() {
   std::vector<Layout> out;
   for (Enc enc : {Enc::ascii, Enc::le, Enc::be})
@@ -167,174 +123,276 @@ std::vector<Layout> all_layouts() {
   return out;
 }
 
-TEST(PlyMass, EveryEncodingTypeAndLayoutAgreesWithTheMeshPath) {
-  // Quads and triangles (the sphere's caps), closed; a cube of quads; an open box.
-  const Mesh sphere = test::uv_sphere(1.25, 6, 9);
-  const Mesh box = test::box_mesh(1, 2, 3);
-  Mesh open = box;
-  open.face_offsets.pop_back();
-  open.corners.resize(open.face_offsets.back());
+// The mesh in every layout.
+std::vector<std::string> in_every_layout(const Mesh& m) {
+  std::vector<std::string> out;
+  for (const Layout& l : all_layouts()) out.push_back(ply_bytes(m, l));
+  return out;
+}
+
+// The malformed variants of the mesh's file in every layout: truncated in the last face and in
+// the vertices, and the last face's last index out of range.
+std::vector<std::string> damaged_in_every_layout(const Mesh& m) {
+  std::vector<std::string> bad;
   for (const Layout& l : all_layouts()) {
-    SCOPED_TRACE(ply_bytes(Mesh{}, l));  // the header says the layout
-    const MassProperties s = expect_paths_agree(ply_bytes(sphere, l));
-    EXPECT_GT(s.faces, s.triangles / 2);
-    const MassProperties b = expect_paths_agree(ply_bytes(box, l));
-    EXPECT_NEAR(b.volume, 6.0, 1e-12);  // closed form: 1 × 2 × 3
-    const MassProperties o = expect_paths_agree(ply_bytes(open, l));
-    EXPECT_GT(o.gap_area, 0);
-  }
-}
-
-TEST(PlyMass, ManyChunksAndAnyThreadCount) {
-  // More faces than several chunks of chunked_sums, offset from the origin.
-  const Mesh big = test::transformed(test::uv_sphere(3, 160, 320), [](Vec3d p) {
-    return p + Vec3d{1e3, -2e3, 5e2};
-  });
-  ASSERT_GT(big.face_count(), 3 * faces_per_chunk);
-  for (Enc enc : {Enc::ascii, Enc::le}) {
-    const std::string bytes = ply_bytes(big, {enc, false, "uchar", "int", false});
-    const MassProperties s = expect_paths_agree(bytes);
-    for (unsigned threads : {1u, 2u, 5u}) {
-      MeshSource source;
-      expect_same(s, careful(bytes, source, threads));
-    }
-    // Closed form of the inscribed polyhedron is not simple; the sphere's volume bounds it.
-    EXPECT_LT(s.volume, 4.0 / 3.0 * std::acos(-1.0) * 27);
-    EXPECT_GT(s.volume, 0.99 * 4.0 / 3.0 * std::acos(-1.0) * 27);
-  }
-}
-
-TEST(PlyMass, Float32WarningAndIgnoredElementsAsTheMeshPath) {
-  // Far from the origin in float32: the precision warning; an extra element: its warning.
-  const Mesh far = test::transformed(test::box_mesh(1, 1, 1), [](Vec3d p) {
-    return p + Vec3d{3e5, 0, 0};
-  });
-  const MassProperties s =
-      expect_paths_agree(ply_bytes(far, {Enc::le, true, "uchar", "int", true}));
-  EXPECT_EQ(s.warnings.size(), 1u);
-  MeshSource source;
-  const std::string bytes = ply_bytes(far, {Enc::be, true, "uint", "uint", true});
-  ASSERT_TRUE(ply_mass_properties({bytes.data(), bytes.size()}, "mem.ply", source));
-  EXPECT_TRUE(source.single_precision);
-  ASSERT_EQ(source.warnings.size(), 1u);
-  EXPECT_NE(source.warnings[0].find("'material'"), std::string::npos);
-}
-
-TEST(PlyMass, NoFacesAndNoFaceElement) {
-  const Mesh box = test::box_mesh(1, 1, 1);
-  Mesh points;
-  points.vertices = box.vertices;
-  const MassProperties s =
-      expect_paths_agree(ply_bytes(points, {Enc::ascii, false, "uchar", "int", false}));
-  EXPECT_EQ(s.faces, 0u);
-  EXPECT_EQ(s.volume, 0);
-  const std::string no_face_element =
-      "ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\nproperty float y\n"
-      "property float z\nend_header\n0 0 0\n1 2 3\n";
-  expect_paths_agree(no_face_element);
-}
-
-TEST(PlyMass, DeclinesWhenFacesComeFirst) {
-  const std::string text =
-      "ply\nformat ascii 1.0\nelement face 1\nproperty list uchar int vertex_indices\n"
-      "element vertex 3\nproperty float x\nproperty float y\nproperty float z\nend_header\n"
-      "3 0 1 2\n0 0 0\n1 0 0\n0 1 0\n";
-  MeshSource source;
-  EXPECT_FALSE(ply_mass_properties({text.data(), text.size()}, "mem.ply", source));
-  MeshSource careful_source;
-  EXPECT_EQ(careful(text, careful_source).faces, 1u);  // the Mesh path reads it
-}
-
-// The error of each path; empty when none throws (a test failure then).
-std::string careful_error(const std::string& bytes) {
-  try {
-    read_mesh_bytes({bytes.data(), bytes.size()}, "mem.ply");
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "the Mesh path accepted the file";
-  return {};
-}
-std::string summed_error(const std::string& bytes) {
-  try {
-    MeshSource source;
-    ply_mass_properties({bytes.data(), bytes.size()}, "mem.ply", source);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "the summing path accepted the file";
-  return {};
-}
-
-TEST(PlyMass, BadInputGivesTheSameErrors) {
-  const Mesh box = test::box_mesh(1, 1, 1);
-  for (const Layout& l : all_layouts()) {
-    const std::string good = ply_bytes(box, l);
-    std::vector<std::string> bad;
-    bad.push_back(good.substr(0, good.size() - 3));                    // truncated in the last face
-    bad.push_back(good.substr(0, good.find("end_header") + 11 + 20));  // in the vertices
-    // An index out of range: the last face's last corner.
-    std::string index = good;
+    const std::string good = ply_bytes(m, l);
+    bad.push_back(good.substr(0, good.size() - 3));
+    bad.push_back(good.substr(0, good.find("end_header") + 11 + 20));
+    if (l.extras) continue;  // the ignored element comes last
+    std::string index;
     if (l.enc == Enc::ascii) {
       index = good.substr(0, good.find_last_of(' ', good.size() - 2) + 1) + "9\n";
-      if (l.extras) index = good;  // the ignored element comes last: patched below
-    } else if (!l.extras) {
-      put_integer(index, l.index_type, 0, l.enc == Enc::be);  // size of one index
-      const std::size_t width = index.size() - good.size();
-      index = good;
-      index.resize(good.size() - width);
+    } else {
+      put_integer(index, l.index_type, 0, false);  // the size of one index
+      const std::size_t width = index.size();
+      index = good.substr(0, good.size() - width);
       put_integer(index, l.index_type, 99, l.enc == Enc::be);
     }
-    if (index != good) bad.push_back(index);
-    for (const std::string& b : bad) {
-      const std::string expected = careful_error(b);
-      EXPECT_FALSE(expected.empty());
-      EXPECT_EQ(summed_error(b), expected);
-    }
+    bad.push_back(index);
   }
-  // NaN coordinates, ASCII and binary; a face of two corners; a negative index.
-  Mesh nan_box = box;
-  nan_box.vertices[3].y = std::numeric_limits<double>::quiet_NaN();
-  for (Enc enc : {Enc::ascii, Enc::le}) {
-    const std::string b = ply_bytes(nan_box, {enc, enc == Enc::le, "uchar", "int", false});
-    EXPECT_EQ(summed_error(b), careful_error(b));
-    EXPECT_NE(careful_error(b).find("mem.ply"), std::string::npos);
-  }
-  const std::string two =
-      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
-      "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
-      "0 0 0\n1 0 0\n0 1 0\n2 0 1\n";
-  EXPECT_EQ(summed_error(two), careful_error(two));
-  const std::string negative = two.substr(0, two.size() - 6) + "3 0 -1 2\n";
-  EXPECT_EQ(summed_error(negative), careful_error(negative));
+  return bad;
 }
 
-TEST(PlyMass, RealMeshesWrittenAsPly) {
-  const std::filesystem::path dir = PGAMESH_SHARED_MESHES_DIR;
-  if (!std::filesystem::is_directory(dir)) GTEST_SKIP() << "no " << dir;
-  std::size_t compared = 0;
-  for (const auto& entry : std::filesystem::recursive_directory_iterator(dir)) {
-    if (!entry.is_regular_file() || entry.file_size() > (std::uintmax_t{2} << 20)) continue;
-    const std::string path = entry.path().string();
-    Mesh m;
-    try {
-      m = read_mesh(path);
-    } catch (const std::exception&) {
-      continue;  // defective on purpose: the readers' tests cover it
-    }
-    if (m.face_count() == 0) continue;
-    SCOPED_TRACE(path);
-    if (entry.path().extension() == ".ply") {
-      // The file itself, as it is.
-      const MappedFile file = MappedFile::open(path);
-      expect_paths_agree(std::string(file.bytes().data(), file.bytes().size()));
-    }
-    expect_paths_agree(ply_bytes(m, {Enc::le, false, "uchar", "uint", false}));
-    expect_paths_agree(ply_bytes(m, {Enc::ascii, false, "int", "int", true}));
-    if (++compared >= 40) break;
-  }
-  EXPECT_GE(compared, 5u);
+const std::string kTriangleHead =
+    "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+    "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+    "0 0 0\n1 0 0\n0 1 0\n";
+
+// A case: its name, the format the front door is told (unknown: detected) and its files.
+struct PlyCase {
+  std::string name;
+  std::function<std::vector<std::string>()> files;
+  MeshFormat format = MeshFormat::unknown;
+};
+
+void PrintTo(const PlyCase& c, std::ostream* os) {
+  *os << c.name;
 }
+
+// The figures of a path, or the text of its InputError.
+struct Outcome {
+  std::optional<MassProperties> mass;
+  MeshSource source;
+  std::string error;
+  bool declined = false;  // the summing consumer only: faces before vertices
+};
+
+template <class Run>
+Outcome outcome(const Run& run) {
+  Outcome o;
+  try {
+    run(o);
+  } catch (const InputError& e) {
+    o.error = e.what();
+  }
+  return o;
+}
+
+void expect_same_outcome(const Outcome& a, const Outcome& b) {
+  EXPECT_EQ(a.error, b.error);
+  ASSERT_EQ(a.mass.has_value(), b.mass.has_value());
+  if (!a.mass) return;
+  test::expect_same_mass(*a.mass, *b.mass);
+  EXPECT_EQ(a.source.format, b.source.format);
+  EXPECT_EQ(a.source.single_precision, b.source.single_precision);
+  EXPECT_EQ(a.source.warnings, b.source.warnings);
+}
+
+class PlyConsumers : public testing::TestWithParam<PlyCase> {};
+
+TEST_P(PlyConsumers, SummingConsumerAndFrontDoorEqualMassPropertiesOfTheReadMesh) {
+  const std::vector<std::string> files = GetParam().files();
+  if (files.empty()) GTEST_SKIP() << "no files (../shared/meshes not found)";
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    SCOPED_TRACE("file " + std::to_string(i) + ": " + files[i].substr(0, 300));
+    const std::span<const char> bytes(files[i].data(), files[i].size());
+
+    // The consumers: the Mesh (its mass properties on 0 = all, 1 and 3 threads) and the sums.
+    Mesh mesh;
+    const Outcome stored = outcome([&](Outcome& o) {
+      detail::read_ply(bytes, "mem.ply", mesh, o.source);
+      o.mass = mass_properties(mesh, {}, &o.source);
+    });
+    const Outcome summed = outcome([&](Outcome& o) {
+      Mesh vertices;
+      const auto sums = detail::read_ply_summing_faces(bytes, "mem.ply", vertices, o.source);
+      o.declined = !sums;
+      if (sums)
+        o.mass = mesh_mass_properties_from_sums(sums->sums, sums->reference, vertices.vertices,
+                                                sums->faces, sums->triangles, {},
+                                                o.source.single_precision);
+    });
+    if (summed.declined) {
+      EXPECT_TRUE(stored.mass.has_value()) << "declined a file the Mesh consumer rejects";
+      EXPECT_EQ(GetParam().name, "FacesBeforeVertices");
+    } else {
+      expect_same_outcome(summed, stored);
+    }
+    if (stored.mass)
+      for (unsigned threads : {1u, 3u}) {
+        MassOptions o;
+        o.threads = threads;
+        test::expect_same_mass(mass_properties(mesh, o, &stored.source), *stored.mass);
+      }
+
+    // The front door without topology against the Mesh path.
+    const Outcome mesh_path = outcome([&](Outcome& o) {
+      const Mesh m = read_mesh_bytes(bytes, "mem.ply", &o.source, GetParam().format);
+      o.mass = mass_properties(m, {}, &o.source);
+    });
+    const Outcome front_door = outcome([&](Outcome& o) {
+      AnalysisOptions options;
+      options.topology = false;
+      options.format = GetParam().format;
+      const Analysis a = analyze_bytes(bytes, "mem.ply", options);
+      o.mass = a.mass;
+      o.source.format = a.format;
+      o.source.single_precision = a.single_precision;
+      o.source.warnings = a.warnings;  // the reader's, then the figures'
+      o.source.warnings.resize(o.source.warnings.size() - a.mass.warnings.size());
+      EXPECT_FALSE(a.streamed);
+    });
+    expect_same_outcome(front_door, mesh_path);
+  }
+}
+
+Mesh sphere_far_away() {
+  // More faces than three chunks of chunked_sums, offset from the origin.
+  return test::transformed(test::uv_sphere(3, 160, 320), [](Vec3d p) {
+    return p + Vec3d{1e3, -2e3, 5e2};
+  });
+}
+
+Mesh open_box() {
+  Mesh m = test::box_mesh(1, 2, 3);
+  m.face_offsets.pop_back();
+  m.corners.resize(m.face_offsets.back());
+  return m;
+}
+
+Mesh non_manifold_cube() {
+  Mesh m = test::unit_cube();
+  m.vertices.push_back({0.5, 0.5, 3});
+  m.add_face({0, 2, 8});            // a third face on the edge (0, 2)
+  m.vertices.push_back({9, 9, 9});  // unreferenced
+  m.add_face({1, 1, 5});            // collapsed
+  return m;
+}
+
+// Faces flipped, then repaired by fix_orientation (check --fix-orientation).
+Mesh repaired_sphere() {
+  Mesh m = test::with_flipped(test::triangulated(test::uv_sphere(1, 8, 16)), {3, 4, 40, 41});
+  fix_orientation(m);
+  return m;
+}
+
+std::vector<std::string> one(std::string s) {
+  return {std::move(s)};
+}
+
+std::vector<PlyCase> cases() {
+  std::vector<PlyCase> c;
+  const auto mesh_case = [&](std::string name, std::function<Mesh()> make) {
+    c.push_back({name, [make] { return in_every_layout(make()); }});
+  };
+  // Quads and triangles (the sphere's caps), closed; a box of quads, closed and open.
+  mesh_case("SphereOfQuadsAndTriangles", [] { return test::uv_sphere(1.25, 6, 9); });
+  mesh_case("Box", [] { return test::box_mesh(1, 2, 3); });
+  mesh_case("OpenBox", open_box);
+  mesh_case("CubeWithFlippedFaces", [] { return test::with_flipped(test::unit_cube(), {2, 7}); });
+  mesh_case("NonManifoldCollapsedUnreferenced", non_manifold_cube);
+  mesh_case("RepairedOrientation", repaired_sphere);
+  mesh_case("VerticesOnly", [] {
+    Mesh m;
+    m.vertices = test::box_mesh(1, 1, 1).vertices;
+    return m;
+  });
+  c.push_back({"ManyChunks", [] {
+                 const Mesh m = sphere_far_away();
+                 return std::vector<std::string>{
+                     ply_bytes(m, {Enc::ascii, false, "uchar", "int", false}),
+                     ply_bytes(m, {Enc::le, false, "uchar", "int", false}),
+                     ply_bytes(m, {Enc::be, true, "int", "uint", true})};
+               }});
+  // Far from the origin in float32: the precision warning; the extra element: its warning.
+  c.push_back({"Float32WarningAndIgnoredElement", [] {
+                 const Mesh far = test::transformed(test::box_mesh(1, 1, 1), [](Vec3d p) {
+                   return p + Vec3d{3e5, 0, 0};
+                 });
+                 return std::vector<std::string>{
+                     ply_bytes(far, {Enc::le, true, "uchar", "int", true}),
+                     ply_bytes(far, {Enc::be, true, "uint", "uint", true})};
+               }});
+  c.push_back({"NoFaceElement", [] {
+                 return one(
+                     "ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\n"
+                     "property float y\nproperty float z\nend_header\n0 0 0\n1 2 3\n");
+               }});
+  c.push_back({"FacesBeforeVertices", [] {
+                 return one(
+                     "ply\nformat ascii 1.0\nelement face 1\n"
+                     "property list uchar int vertex_indices\nelement vertex 3\n"
+                     "property float x\nproperty float y\nproperty float z\nend_header\n"
+                     "3 0 1 2\n0 0 0\n1 0 0\n0 1 0\n");
+               }});
+  // Errors: the same text and position from every path.
+  c.push_back({"TruncatedOrIndexOutOfRange",
+               [] { return damaged_in_every_layout(test::box_mesh(1, 1, 1)); }});
+  c.push_back({"NonFiniteCoordinate", [] {
+                 Mesh m = test::box_mesh(1, 1, 1);
+                 m.vertices[3].y = std::numeric_limits<double>::quiet_NaN();
+                 return std::vector<std::string>{
+                     ply_bytes(m, {Enc::ascii, false, "uchar", "int", false}),
+                     ply_bytes(m, {Enc::le, true, "uchar", "int", false}),
+                     ply_bytes(m, {Enc::be, false, "uchar", "int", true})};
+               }});
+  c.push_back(
+      {"FaceOfTwoCornersOrNegativeIndex", [] {
+         return std::vector<std::string>{kTriangleHead + "2 0 1\n", kTriangleHead + "3 0 -1 2\n"};
+       }});
+  c.push_back({"MalformedHeader", [] {
+                 return std::vector<std::string>{
+                     "ply\nformat", "ply\nformat ascii 1.0\nelement vertex 0\n",
+                     "ply\nend_header\n", "ply\nformat ascii 1.0\nbogus\nend_header\n",
+                     "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n"
+                     "property float y\nend_header\n0 0\n"};
+               }});
+  // Told the format: the front door's error for an empty file is read_mesh_bytes' own.
+  c.push_back({"EmptyFileToldPly",
+               [] {
+                 return std::vector<std::string>{"", " \n "};
+               },
+               MeshFormat::ply_binary_le});
+  // The real meshes of ../shared/meshes: the PLY files as they are, every mesh written as PLY.
+  c.push_back({"RealMeshes", [] {
+                 std::vector<std::string> out;
+                 const std::filesystem::path dir = PGAMESH_SHARED_MESHES_DIR;
+                 if (!std::filesystem::is_directory(dir)) return out;
+                 std::size_t meshes = 0;
+                 for (const auto& entry : std::filesystem::recursive_directory_iterator(dir)) {
+                   if (!entry.is_regular_file() || entry.file_size() > (std::uintmax_t{2} << 20))
+                     continue;
+                   const std::string path = entry.path().string();
+                   if (entry.path().extension() == ".ply") out.push_back(test::file_bytes(path));
+                   Mesh m;
+                   try {
+                     m = read_mesh(path);
+                   } catch (const std::exception&) {
+                     continue;  // defective on purpose: the readers' tests cover it
+                   }
+                   if (m.face_count() == 0 || ++meshes > 40) continue;
+                   out.push_back(ply_bytes(m, {Enc::le, false, "uchar", "uint", false}));
+                   out.push_back(ply_bytes(m, {Enc::ascii, false, "int", "int", true}));
+                 }
+                 return out;
+               }});
+  return c;
+}
+
+INSTANTIATE_TEST_SUITE_P(Ply, PlyConsumers, testing::ValuesIn(cases()),
+                         [](const testing::TestParamInfo<PlyCase>& info) {
+                           return info.param.name;
+                         });
 
 }  // namespace
 }  // namespace pgamesh
