@@ -2,11 +2,11 @@
 // [--fix-orientation [--output OUT]]`: the topology of a mesh (docs/topology.md). The report is the
 // result, so an open or broken mesh still exits 0; unreadable input exits 1 with the reader's
 // error.
-#include <charconv>
-#include <cmath>
+#include <algorithm>
 #include <cstdio>
-#include <cstring>
 #include <exception>
+#include <limits>
+#include <memory>
 #include <string>
 #include <string_view>
 
@@ -22,42 +22,6 @@
 namespace pgamesh::cli {
 
 namespace {
-
-void print_check_help(std::FILE* out) {
-  std::fprintf(
-      out,
-      "usage: pgamesh check FILE [options]\n"
-      "\n"
-      "Topology of a mesh: welds coincident vertices, then reports boundary edges and loops\n"
-      "(each with its vector area, area and perimeter), the gap 1/2|sum F| and the range of\n"
-      "volumes that closing the holes could give, non-manifold and inconsistently oriented\n"
-      "edges, zero-area and duplicated faces, connected components, and whether volume,\n"
-      "centre of mass and inertia are meaningful. Exit code 0 whatever the mesh is like;\n"
-      "1 when the file cannot be read; 2 for bad options.\n"
-      "\n"
-      "options:\n"
-      "  --json                 one JSON object on stdout (fields: docs/topology.md)\n"
-      "  --weld-tolerance T     also merge vertices closer than T (default 0: bitwise-equal\n"
-      "                         coordinates only); reports how many merged and how far\n"
-      "  --area-threshold R     faces with area <= R x (longest side)^2 are reported as nearly\n"
-      "                         zero-area (default 1e-9)\n"
-      "  --max-list N           locations listed per list (default 20; counts are complete)\n"
-      "  --fix-orientation      reverse faces to agree with their neighbours and turn closed\n"
-      "                         parts outward; reports the faces flipped, then the repaired mesh\n"
-      "  --output OUT           with --fix-orientation: write the repaired mesh (format from\n"
-      "                         OUT's extension: .stl .obj .ply .off)\n"
-      "  --format F             read FILE as F (stl, obj, ply, off; default: detect)\n");
-}
-
-bool parse_double(std::string_view text, double& out) {
-  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), out);
-  return ec == std::errc() && end == text.data() + text.size() && std::isfinite(out);
-}
-
-bool parse_count(std::string_view text, std::size_t& out) {
-  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), out);
-  return ec == std::errc() && end == text.data() + text.size();
-}
 
 bool ends_with_ci(std::string_view s, std::string_view suffix) {
   if (s.size() < suffix.size()) return false;
@@ -95,8 +59,9 @@ void print_vec(Vec3d v) {
   std::printf("(%.9g, %.9g, %.9g)", v.x, v.y, v.z);
 }
 
-void print_readable(const Mesh& mesh, const MeshSource& source, const TopologyReport& r,
+void print_readable(const Mesh& mesh, const MeshSource& source, const Analysis& analysis,
                     const OrientationFix* fix, std::size_t cap) {
+  const TopologyReport& r = *analysis.topology;
   std::printf("%s (%s)\n", source.path.c_str(), format_name(source.format));
   std::printf("  faces               %zu (%zu triangles)\n", r.faces, r.triangles);
   std::printf("  vertices            %zu welded from %zu (%zu merged", r.vertices, r.input_vertices,
@@ -111,7 +76,7 @@ void print_readable(const Mesh& mesh, const MeshSource& source, const TopologyRe
               r.orientation_consistent ? "consistent" : "INCONSISTENT");
   std::printf("  area                %.17g\n", r.area);
   std::printf("  volume              %.17g%s\n", r.volume,
-              r.volume_valid ? "" : "   (NOT MEANINGFUL: see notes)");
+              analysis.volume_valid.value_or(false) ? "" : "   (NOT MEANINGFUL: see notes)");
   std::printf("  gap area            %.17g\n", r.gap_area);
   if (r.boundary_edges > 0) {
     std::printf("  volume if capped    %.17g .. %.17g (ambiguity %.6g)\n", r.volume_min,
@@ -177,99 +142,49 @@ void print_readable(const Mesh& mesh, const MeshSource& source, const TopologyRe
       std::printf("\n");
     }
   }
-  if (!r.notes.empty()) {
+  // The topology's notes, then the reasons the volume is not valid that they do not already give.
+  std::vector<std::string> notes = r.notes;
+  for (const auto& reason : analysis.reasons)
+    if (std::find(notes.begin(), notes.end(), reason) == notes.end()) notes.push_back(reason);
+  if (!notes.empty()) {
     std::printf("notes:\n");
-    for (const auto& n : r.notes) std::printf("  - %s\n", n.c_str());
+    for (const auto& n : notes) std::printf("  - %s\n", n.c_str());
   }
-  for (const auto& w : source.warnings) std::printf("warning: %s\n", w.c_str());
+  for (const auto& w : analysis.warnings) std::printf("warning: %s\n", w.c_str());
 }
 
-int run_check(int argc, char** argv) {
+struct CheckOptions {
   std::string path, output;
   bool json = false, fix = false;
-  TopologyOptions options;
+  TopologyOptions topology;
+  unsigned long long list_cap = TopologyOptions{}.list_cap;
   MeshFormat forced = MeshFormat::unknown;
-  for (int i = 1; i < argc; ++i) {
-    const std::string_view arg = argv[i];
-    auto value = [&](const char* name) -> const char* {
-      if (i + 1 >= argc) {
-        std::fprintf(stderr, "pgamesh check: %s needs a value\n", name);
-        return nullptr;
-      }
-      return argv[++i];
-    };
-    if (arg == "--help" || arg == "-h") {
-      print_check_help(stdout);
-      return 0;
-    } else if (arg == "--json") {
-      json = true;
-    } else if (arg == "--fix-orientation") {
-      fix = true;
-    } else if (arg == "--weld-tolerance") {
-      const char* v = value("--weld-tolerance");
-      if (!v) return 2;
-      if (!parse_double(v, options.weld_tolerance) || options.weld_tolerance < 0) {
-        std::fprintf(stderr, "pgamesh check: --weld-tolerance needs a number >= 0, got '%s'\n", v);
-        return 2;
-      }
-    } else if (arg == "--area-threshold") {
-      const char* v = value("--area-threshold");
-      if (!v) return 2;
-      if (!parse_double(v, options.area_threshold) || options.area_threshold < 0) {
-        std::fprintf(stderr, "pgamesh check: --area-threshold needs a number >= 0, got '%s'\n", v);
-        return 2;
-      }
-    } else if (arg == "--max-list") {
-      const char* v = value("--max-list");
-      if (!v) return 2;
-      if (!parse_count(v, options.list_cap)) {
-        std::fprintf(stderr, "pgamesh check: --max-list needs a count, got '%s'\n", v);
-        return 2;
-      }
-    } else if (arg == "--output" || arg == "-o") {
-      const char* v = value("--output");
-      if (!v) return 2;
-      output = v;
-    } else if (arg == "--format") {
-      const char* v = value("--format");
-      if (!v) return 2;
-      forced = format_from_name(v);
-      if (forced == MeshFormat::unknown && std::string_view(v) != "auto") {
-        std::fprintf(stderr, "pgamesh check: unknown format '%s'\n", v);
-        return 2;
-      }
-    } else if (!arg.empty() && arg[0] == '-' && arg != "-") {
-      std::fprintf(stderr, "pgamesh check: unknown option '%s' (see pgamesh check --help)\n",
-                   argv[i]);
-      return 2;
-    } else if (path.empty()) {
-      path = arg;
-    } else {
-      std::fprintf(stderr, "pgamesh check: more than one FILE ('%s', '%s')\n", path.c_str(),
-                   argv[i]);
-      return 2;
-    }
-  }
-  if (path.empty()) {
-    print_check_help(stderr);
-    return 2;
-  }
-  if (!output.empty() && !fix) {
-    std::fprintf(stderr, "pgamesh check: --output writes the repaired mesh of --fix-orientation\n");
-    return 2;
-  }
+};
+
+int run_check(const CheckOptions& o) {
+  TopologyOptions options = o.topology;
+  options.list_cap = static_cast<std::size_t>(o.list_cap);
+  const std::string& path = o.path;
+  const std::string& output = o.output;
+  const bool fix = o.fix, json = o.json;
+  if (!output.empty() && !fix)
+    throw UsageError("--output writes the repaired mesh of --fix-orientation");
 
   try {
     MeshSource source;
-    Mesh mesh = read_mesh(path, &source, forced);
+    Mesh mesh = read_mesh(path, &source, o.forced);
     OrientationFix repair;
     if (fix) {
-      OrientationOptions o;
-      o.weld_tolerance = options.weld_tolerance;
-      o.list_cap = options.list_cap;
-      repair = fix_orientation(mesh, o);
+      OrientationOptions fix_options;
+      fix_options.weld_tolerance = options.weld_tolerance;
+      fix_options.list_cap = options.list_cap;
+      repair = fix_orientation(mesh, fix_options);
     }
-    const TopologyReport report = analyze_topology(mesh, options);
+    // The topology report with the mass properties' judgement of it (volume_valid, reasons,
+    // warnings: the same as `pgamesh props`).
+    AnalysisOptions analysis_options;
+    analysis_options.topology_options = options;
+    const Analysis analysis = analyze_mesh(mesh, source, analysis_options);
     if (!output.empty()) {
       const MeshFormat format = output_format(output, source.format);
       if (format == MeshFormat::unknown) {
@@ -285,10 +200,10 @@ int run_check(int argc, char** argv) {
       CheckJsonOptions jo;
       jo.list_cap = options.list_cap;
       jo.loop_point_cap = options.list_cap;
-      const std::string doc = check_json(mesh, source, report, fix ? &repair : nullptr, jo);
+      const std::string doc = check_json(mesh, source, analysis, fix ? &repair : nullptr, jo);
       std::fwrite(doc.data(), 1, doc.size(), stdout);
     } else {
-      print_readable(mesh, source, report, fix ? &repair : nullptr, options.list_cap);
+      print_readable(mesh, source, analysis, fix ? &repair : nullptr, options.list_cap);
       if (!output.empty()) std::printf("wrote %s\n", output.c_str());
     }
     return 0;
@@ -301,10 +216,44 @@ int run_check(int argc, char** argv) {
   }
 }
 
-const RegisterCommand registered{
-    {"check", "topology: weld, boundary loops and gap, orientation, defects, components", run_check,
-     20}};
-
 }  // namespace
+
+void add_check_command(CLI::App& app) {
+  CLI::App* sub = add_command(
+      app, "check", "topology: weld, boundary loops and gap, orientation, defects, components",
+      "Topology of a mesh: welds coincident vertices, then reports boundary edges and loops\n"
+      "(each with its vector area, area and perimeter), the gap 1/2|sum F| and the range of\n"
+      "volumes that closing the holes could give, non-manifold and inconsistently oriented\n"
+      "edges, zero-area and duplicated faces, connected components, and whether volume,\n"
+      "centre of mass and inertia are meaningful.");
+  sub->footer(
+      "Exit status: 0 whatever the mesh is like; 1 when the file cannot be read; 2 for bad\n"
+      "options.");
+  auto o = std::make_shared<CheckOptions>();
+  add_file(*sub, o->path, "the mesh file; \"-\" reads standard input");
+  sub->add_flag("--json", o->json, "one JSON object on stdout (fields: docs/json.md)");
+  add_number(*sub, "--weld-tolerance", o->topology.weld_tolerance,
+             "also merge vertices closer than T (default 0: bitwise-equal\n"
+             "coordinates only); reports how many merged and how far",
+             0.0)
+      ->type_name("T");
+  add_number(*sub, "--area-threshold", o->topology.area_threshold,
+             "faces with area <= R x (longest side)^2 are reported as nearly\n"
+             "zero-area (default 1e-9)",
+             0.0)
+      ->type_name("R");
+  add_count(*sub, "--max-list", o->list_cap,
+            "locations listed per list (default 20; counts are complete)", 0,
+            std::numeric_limits<std::size_t>::max());
+  sub->add_flag("--fix-orientation", o->fix,
+                "reverse faces to agree with their neighbours and turn closed\n"
+                "parts outward; reports the faces flipped, then the repaired mesh");
+  sub->add_option("-o,--output", o->output,
+                  "with --fix-orientation: write the repaired mesh (format from\n"
+                  "OUT's extension: .stl .obj .ply .off)")
+      ->type_name("OUT");
+  add_format(*sub, o->forced);
+  on_run(*sub, [o] { return run_check(*o); });
+}
 
 }  // namespace pgamesh::cli

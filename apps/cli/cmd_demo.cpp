@@ -7,7 +7,9 @@
 
 namespace pgamesh::cli {
 
-static int run_demo(int, char**) {
+namespace {
+
+int run_demo() {
   using namespace pgamesh::pga3;
   const auto o = origin<double>();
   const auto a = point(1.0, 0.0, 0.0), b = point(0.0, 1.0, 0.0), c = point(0.0, 0.0, 1.0);
@@ -20,10 +22,14 @@ static int run_demo(int, char**) {
   return 0;
 }
 
-namespace {
-const RegisterCommand registered{
-    {"demo", "a short PGA demonstration: carriers of a tetrahedron and their magnitudes", run_demo,
-     90}};
 }  // namespace
+
+void add_demo_command(CLI::App& app) {
+  CLI::App* sub = add_command(
+      app, "demo", "a short PGA demonstration: carriers of a tetrahedron and their magnitudes",
+      "Joins the vertices of the unit tetrahedron into the carriers of an edge, a face and the\n"
+      "solid, and prints their magnitudes: length, area and volume.");
+  on_run(*sub, [] { return run_demo(); });
+}
 
 }  // namespace pgamesh::cli

@@ -1,10 +1,9 @@
 // `pgamesh fuel FILE --up X,Y,Z (--level H | --volume V | --fraction F | --table N |
 // --volumes V1,V2,...) [--pitch DEG[,DEG...]] [--roll DEG[,DEG...]] [--accel AX,AY,AZ]
-// [--density RHO | --mass M] [--json | --csv] [--force]`: fuel gauging of a closed tank (DESIGN.md
-// §5, docs/fuel.md).
+// [--density RHO | --mass M] [--json | --csv] [--force]`: fuel gauging of a closed tank
+// (docs/fuel.md).
 #include <unistd.h>
 
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <exception>
@@ -18,8 +17,9 @@
 
 #include "commands.hpp"
 #include "fuel_json.hpp"
-#include "json_writer.hpp"
+#include "json_text.hpp"
 #include "pgamesh/core/input_error.hpp"
+#include "pgamesh/io/mesh_format.hpp"
 #include "pgamesh/io/read_mesh.hpp"
 #include "pgamesh/mesh/topology/topology.hpp"
 #include "pgamesh/tank/attitude.hpp"
@@ -30,40 +30,6 @@
 namespace pgamesh::cli {
 
 namespace {
-
-void print_fuel_help(std::FILE* out) {
-  std::fprintf(
-      out,
-      "usage: pgamesh fuel FILE [--up X,Y,Z] (--level H | --volume V | --fraction F |\n"
-      "                          --table N | --volumes V1,V2,...) [options]\n"
-      "\n"
-      "Fuel in a closed tank mesh below the plane up.x = level (up normalised; the fuel is\n"
-      "up.x <= level): volume, fraction, centre of mass, inertia, wetted area, free surface.\n"
-      "\n"
-      "queries (one of):\n"
-      "  --level H          the fuel below level H\n"
-      "  --volume V         the level that holds volume V (Newton on dV/dlevel = surface area)\n"
-      "  --fraction F       the level that holds the fraction F (0..1) of the tank\n"
-      "  --table N          gauge table: N+1 levels from the lowest to the highest point\n"
-      "  --volumes V1,...   levels for a list of volumes\n"
-      "\n"
-      "attitude (tank frame: x forward, y left, z up):\n"
-      "  --up X,Y,Z         up vector of the level tank (default 0,0,1)\n"
-      "  --pitch DEG[,...]  pitch, positive nose up (a list makes a grid of attitudes)\n"
-      "  --roll DEG[,...]   roll, positive right side down (pitch first, then roll)\n"
-      "  --accel AX,AY,AZ   apparent gravity in the tank frame (e.g. 0,0,-9.81 at rest):\n"
-      "                     up = -accel/|accel|; replaces --up, --pitch and --roll\n"
-      "\n"
-      "mass (as in pgamesh props):\n"
-      "  --density RHO      mass per unit volume (default 1: mass = volume)\n"
-      "  --mass M           mass of the full tank instead; the density is M / tank volume\n"
-      "\n"
-      "output:\n"
-      "  --json             one JSON object on stdout\n"
-      "  --csv              CSV with a commented header (tables and volume lists)\n"
-      "  --force            compute even when the mesh is open, inconsistently oriented\n"
-      "                     or inside out (the same topology report as pgamesh check)\n");
-}
 
 struct Options {
   std::string file;
@@ -81,100 +47,41 @@ struct Options {
   bool json = false, csv = false, force = false;
 };
 
-struct UsageError : std::runtime_error {
-  using std::runtime_error::runtime_error;
+// The options as parsed, before the query and the attitude are told apart.
+struct FuelArgs {
+  Options o;
+  std::optional<double> level, volume, fraction;
+  unsigned long long table = 0;
+  CLI::Option *up = nullptr, *pitch = nullptr, *roll = nullptr, *accel = nullptr,
+              *table_given = nullptr, *volumes = nullptr;
 };
 
-double parse_number(std::string_view option, std::string_view text) {
-  double v = 0;
-  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
-  if (ec != std::errc() || end != text.data() + text.size() || !std::isfinite(v))
-    throw UsageError(std::string(option) + ": '" + std::string(text) + "' is not a finite number");
-  return v;
-}
-
-std::vector<double> parse_list(std::string_view option, std::string_view text) {
-  std::vector<double> out;
-  std::size_t start = 0;
-  for (;;) {
-    const std::size_t comma = text.find(',', start);
-    out.push_back(parse_number(option, text.substr(start, comma - start)));
-    if (comma == std::string_view::npos) break;
-    start = comma + 1;
-  }
-  return out;
-}
-
-Vec3d parse_vec(std::string_view option, std::string_view text) {
-  const auto v = parse_list(option, text);
-  if (v.size() != 3) throw UsageError(std::string(option) + " needs three numbers X,Y,Z");
-  return {v[0], v[1], v[2]};
-}
-
-Options parse(int argc, char** argv) {
-  Options o;
-  auto set_query = [&](Options::Query q) {
-    if (o.query != Options::Query::none)
-      throw UsageError("give only one of --level, --volume, --fraction, --table, --volumes");
-    o.query = q;
-  };
-  for (int i = 1; i < argc; ++i) {
-    const std::string_view arg = argv[i];
-    auto value = [&]() -> std::string_view {
-      if (i + 1 >= argc) throw UsageError(std::string(arg) + " needs a value");
-      return argv[++i];
-    };
-    if (arg == "--up") {
-      o.up = parse_vec(arg, value());
-      o.up_given = true;
-    } else if (arg == "--pitch") {
-      o.pitch = parse_list(arg, value());
-      o.attitude = true;
-    } else if (arg == "--roll") {
-      o.roll = parse_list(arg, value());
-      o.attitude = true;
-    } else if (arg == "--accel") {
-      o.accel = parse_vec(arg, value());
-      o.accel_given = true;
-    } else if (arg == "--level") {
-      set_query(Options::Query::level);
-      o.value = parse_number(arg, value());
-    } else if (arg == "--volume") {
-      set_query(Options::Query::volume);
-      o.value = parse_number(arg, value());
-    } else if (arg == "--fraction") {
-      set_query(Options::Query::fraction);
-      o.value = parse_number(arg, value());
-    } else if (arg == "--table") {
-      set_query(Options::Query::table);
-      const double n = parse_number(arg, value());
-      if (n < 1 || n > 10'000'000 || n != std::floor(n))
-        throw UsageError("--table N needs a whole number of steps from 1 to 10000000");
-      o.table = static_cast<int>(n);
-    } else if (arg == "--volumes") {
-      set_query(Options::Query::volumes);
-      o.volumes = parse_list(arg, value());
-    } else if (arg == "--density") {
-      o.density = parse_number(arg, value());
-    } else if (arg == "--mass") {
-      o.mass = parse_number(arg, value());
-    } else if (arg == "--json") {
-      o.json = true;
-    } else if (arg == "--csv") {
-      o.csv = true;
-    } else if (arg == "--force") {
-      o.force = true;
-    } else if (!arg.empty() && arg[0] == '-' && arg != "-") {
-      throw UsageError("unknown option '" + std::string(arg) + "'");
-    } else if (o.file.empty()) {
-      o.file = arg;
-    } else {
-      throw UsageError("more than one FILE given");
-    }
-  }
-  if (o.file.empty()) throw UsageError("no FILE given");
-  if (o.query == Options::Query::none)
+Options resolve(const FuelArgs& a) {
+  Options o = a.o;
+  o.up_given = a.up->count() > 0;
+  o.attitude = a.pitch->count() + a.roll->count() > 0;
+  o.accel_given = a.accel->count() > 0;
+  const int queries = a.level.has_value() + a.volume.has_value() + a.fraction.has_value() +
+                      (a.table_given->count() > 0) + (a.volumes->count() > 0);
+  if (queries > 1)
+    throw UsageError("give only one of --level, --volume, --fraction, --table, --volumes");
+  if (queries == 0)
     throw UsageError("give one of --level, --volume, --fraction, --table, --volumes");
+  if (a.level) {
+    o.query = Options::Query::level;
+    o.value = *a.level;
+  } else if (a.volume) {
+    o.query = Options::Query::volume;
+    o.value = *a.volume;
+  } else if (a.fraction) {
+    o.query = Options::Query::fraction;
+    o.value = *a.fraction;
+  } else if (a.table_given->count() > 0) {
+    o.query = Options::Query::table;
+    o.table = static_cast<int>(a.table);
+  } else {
+    o.query = Options::Query::volumes;
+  }
   if (o.json && o.csv) throw UsageError("--json and --csv exclude each other");
   if (o.density && o.mass) throw UsageError("give --density or --mass, not both");
   if (o.accel_given && (o.up_given || o.attitude))
@@ -210,38 +117,41 @@ std::string fmt(double v) {
 struct TankCheck {
   TopologyReport topology;
   bool fit = false;
-  bool forced = false;  // unfit, computed anyway (--force)
+  bool forced = false;                // unfit, computed anyway (--force)
+  std::vector<std::string> problems;  // why unfit (tank::TankFitness::problems)
 };
 
-void write_header(JsonWriter& w, const Options& o, const tank::Tank& t, const TankCheck& check,
-                  double density) {
-  w.string("file", o.file);
-  w.integer("triangles", t.triangles.size());
-  w.number("tank_volume", t.volume);
-  w.number("density", density);
-  w.number("tank_mass", density * t.volume);
+// The tank's fields of the document: the same names as `pgamesh props` and `pgamesh check` for the
+// same things (docs/json.md).
+void write_header(Json& w, const Options& o, const MeshSource& source, const Mesh& mesh,
+                  const tank::Tank& t, const TankCheck& check, double density) {
+  w["file"] = o.file;
+  w["format"] = format_name(source.format);
+  w["triangles"] = t.triangles.size();
+  w["faces"] = mesh.face_count();
+  w["tank_volume"] = json_number(t.volume);
+  w["density"] = json_number(density);
+  w["tank_mass"] = json_number(density * t.volume);
   const TopologyReport& r = check.topology;
-  w.begin_object("topology");
-  w.boolean("closed", r.closed);
-  w.boolean("orientation_consistent", r.orientation_consistent);
-  w.integer("boundary_edges", r.boundary_edges);
-  w.integer("nonmanifold_edges", r.nonmanifold_edges);
-  w.integer("inconsistent_edges", r.inconsistent_edges);
-  w.number("gap_area", r.gap_area);
-  w.boolean("volume_valid", r.volume_valid);
-  w.begin_array("notes");
-  for (const auto& note : r.notes) w.string(note);
-  w.end_array();
-  w.end_object();
-  w.boolean("forced", check.forced);
-  write_fuel_conventions(w);
+  w["topology"] = Json{{"closed", r.closed},
+                       {"orientation_consistent", r.orientation_consistent},
+                       {"boundary_edges", r.boundary_edges},
+                       {"nonmanifold_edges", r.nonmanifold_edges},
+                       {"inconsistent_edges", r.inconsistent_edges},
+                       {"gap_area", json_number(r.gap_area)},
+                       {"notes", json_strings(r.notes)}};
+  w["volume_valid"] = check.fit;
+  w["reasons"] = json_strings(check.problems);
+  w["forced"] = check.forced;
+  w["warnings"] = json_strings(source.warnings);
+  w["conventions"] = fuel_conventions();
 }
 
-void write_attitude(JsonWriter& w, const Options& o, const Attitude& a) {
-  w.vec3("up", a.up);
+void write_attitude(Json& w, const Options& o, const Attitude& a) {
+  w["up"] = json_vec3(a.up);
   if (o.attitude) {
-    w.number("pitch_deg", a.pitch_deg);
-    w.number("roll_deg", a.roll_deg);
+    w["pitch_deg"] = json_number(a.pitch_deg);
+    w["roll_deg"] = json_number(a.roll_deg);
   }
 }
 
@@ -269,6 +179,7 @@ TankCheck check_tank(const Options& o, const Mesh& mesh, const tank::Tank& t) {
   TankCheck c;
   c.topology = std::move(fitness.topology);
   c.fit = fitness.fit;
+  c.problems = fitness.problems;
   if (c.fit) return c;
   c.forced = o.force;
   const TopologyReport& r = c.topology;
@@ -288,7 +199,8 @@ TankCheck check_tank(const Options& o, const Mesh& mesh, const tank::Tank& t) {
 }
 
 int run(const Options& o) {
-  const Mesh mesh = read_mesh(o.file);
+  MeshSource source;
+  const Mesh mesh = read_mesh(o.file, &source);
   tank::Tank t;
   try {
     t = tank::make_tank(mesh);
@@ -307,10 +219,10 @@ int run(const Options& o) {
   const std::vector<Attitude> atts = attitudes(o);
   const bool grid = atts.size() > 1;
   const bool tty = isatty(fileno(stderr));
-  JsonWriter w;
-  w.begin_object();
-  write_header(w, o, t, check, density);
-  if (grid) w.begin_array("attitudes");
+  // The document: the tank's fields, then one attitude's (or "attitudes", one object each).
+  Json doc;
+  write_header(doc, o, source, mesh, t, check, density);
+  if (grid) doc["attitudes"] = Json::array();
   if (o.csv) {
     std::printf(
         "# pgamesh fuel: %s\n# fuel is up.x <= level (up a unit vector, tank frame x "
@@ -325,7 +237,8 @@ int run(const Options& o) {
   for (std::size_t ai = 0; ai < atts.size(); ++ai) {
     const Attitude& a = atts[ai];
     const tank::LevelRange range = tank::level_range(t, a.up);
-    if (grid) w.begin_object();
+    Json attitude_fields;
+    Json& w = grid ? attitude_fields : doc;
     if (o.csv && (ai == 0 || grid))
       std::printf(
           "# up %.17g,%.17g,%.17g%s\n", a.up.x, a.up.y, a.up.z,
@@ -373,7 +286,7 @@ int run(const Options& o) {
             throw std::domain_error("the fraction " + fmt(o.value) + " is outside [0, 1]");
           targets[0] = o.value * t.volume;
         }
-        if (o.query == Options::Query::volumes) w.begin_array("rows");
+        Json rows = Json::array();
         if (o.csv && (ai == 0))
           std::printf("target_volume,iterations,%s\n", fuel_csv_columns(csv_attitude).c_str());
         for (double v : targets) {
@@ -384,17 +297,18 @@ int run(const Options& o) {
                 "%.17g,%d,%s\n", v, s.iterations,
                 fuel_csv_row(st, range, csv_attitude, a.pitch_deg, a.roll_deg, density).c_str());
           } else if (o.json) {
-            if (o.query == Options::Query::volumes) w.begin_object();
-            w.number("target_volume", v);
-            w.integer("iterations", static_cast<unsigned long long>(s.iterations));
-            write_fuel_state(w, st, range, density);
-            if (o.query == Options::Query::volumes) w.end_object();
+            Json row;
+            Json& target = o.query == Options::Query::volumes ? row : w;
+            target["target_volume"] = json_number(v);
+            target["iterations"] = s.iterations;
+            write_fuel_state(target, st, range, density);
+            if (o.query == Options::Query::volumes) rows.push_back(std::move(row));
           } else {
             std::printf("  target volume   %s (%d fuel queries)\n", fmt(v).c_str(), s.iterations);
             print_state(st, range, density);
           }
         }
-        if (o.query == Options::Query::volumes) w.end_array();
+        if (o.json && o.query == Options::Query::volumes) w["rows"] = std::move(rows);
         break;
       }
       case Options::Query::table: {
@@ -412,13 +326,12 @@ int run(const Options& o) {
                 "%s\n",
                 fuel_csv_row(st, range, csv_attitude, a.pitch_deg, a.roll_deg, density).c_str());
         } else if (o.json) {
-          w.begin_array("rows");
+          Json& out = w["rows"] = Json::array();
           for (const auto& st : rows) {
-            w.begin_object();
-            write_fuel_state(w, st, range, density);
-            w.end_object();
+            Json row;
+            write_fuel_state(row, st, range, density);
+            out.push_back(std::move(row));
           }
-          w.end_array();
         } else {
           std::printf("  %-14s %-14s %-10s %-14s %-14s\n", "level", "volume", "fraction",
                       "free surface", "wetted area");
@@ -432,31 +345,18 @@ int run(const Options& o) {
       case Options::Query::none:
         break;
     }
-    if (grid) w.end_object();
+    if (grid) doc["attitudes"].push_back(std::move(attitude_fields));
     if (tty && grid && !o.json && (o.csv || o.query == Options::Query::table))
       std::fprintf(stderr, "\rpgamesh fuel: attitude %zu of %zu", ai + 1, atts.size());
   }
   if (tty && grid && !o.json && (o.csv || o.query == Options::Query::table))
     std::fprintf(stderr, "\n");
-  if (grid) w.end_array();
-  w.end_object();
-  if (o.json) std::printf("%s\n", w.str().c_str());
+  if (o.json) std::printf("%s\n", json_text(doc).c_str());
   return 0;
 }
 
-int run_fuel(int argc, char** argv) {
-  for (int i = 1; i < argc; ++i)
-    if (std::string_view(argv[i]) == "--help" || std::string_view(argv[i]) == "-h") {
-      print_fuel_help(stdout);
-      return 0;
-    }
-  Options o;
-  try {
-    o = parse(argc, argv);
-  } catch (const UsageError& e) {
-    std::fprintf(stderr, "pgamesh fuel: %s\n(see pgamesh fuel --help)\n", e.what());
-    return 2;
-  }
+int run_fuel(const FuelArgs& args) {
+  const Options o = resolve(args);
   try {
     return run(o);
   } catch (const InputError& e) {
@@ -467,10 +367,69 @@ int run_fuel(int argc, char** argv) {
   return 1;
 }
 
-const RegisterCommand registered{
-    {"fuel", "fuel gauging: volume, centre of mass, free surface at a level; inverse; tables",
-     run_fuel, 30}};
-
 }  // namespace
+
+void add_fuel_command(CLI::App& app) {
+  CLI::App* sub = add_command(
+      app, "fuel", "fuel gauging: volume, centre of mass, free surface at a level; inverse; tables",
+      "Fuel in a closed tank mesh below the plane up.x = level (up normalised; the fuel is\n"
+      "up.x <= level): volume, fraction, centre of mass, inertia, wetted area, free surface.\n"
+      "Give one query: --level, --volume, --fraction, --table or --volumes.");
+  sub->footer(
+      "Tank frame: x forward, y left, z up. JSON fields: docs/json.md.\n"
+      "Exit status: 0 on success, 1 for unreadable input, a mesh that is not a tank (without\n"
+      "--force) or a level or volume outside the tank, 2 for bad usage.");
+  auto a = std::make_shared<FuelArgs>();
+  Options& o = a->o;
+  add_file(*sub, o.file, "the tank mesh file");
+  const std::string queries = "queries (one of)", attitude = "attitude (tank frame)",
+                    mass = "mass (as in pgamesh props)", output = "output";
+  add_number(*sub, "--level", a->level, "the fuel below level H")->type_name("H")->group(queries);
+  add_number(*sub, "--volume", a->volume,
+             "the level that holds volume V (Newton on dV/dlevel = surface area)")
+      ->type_name("V")
+      ->group(queries);
+  add_number(*sub, "--fraction", a->fraction,
+             "the level that holds the fraction F (0..1) of the tank")
+      ->type_name("F")
+      ->group(queries);
+  a->table_given =
+      add_count(*sub, "--table", a->table,
+                "gauge table: N+1 levels from the lowest to the highest point", 1, 10'000'000)
+          ->group(queries);
+  a->volumes = add_numbers(*sub, "--volumes", o.volumes, "levels for a list of volumes")
+                   ->type_name("V1,V2,...")
+                   ->group(queries);
+  a->up =
+      add_vec3(*sub, "--up", o.up, "up vector of the level tank (default 0,0,1)")->group(attitude);
+  a->pitch = add_numbers(*sub, "--pitch", o.pitch,
+                         "pitch, positive nose up (a list makes a grid of attitudes)")
+                 ->type_name("DEG[,...]")
+                 ->group(attitude);
+  a->roll =
+      add_numbers(*sub, "--roll", o.roll, "roll, positive right side down (pitch first, then roll)")
+          ->type_name("DEG[,...]")
+          ->group(attitude);
+  a->accel = add_vec3(*sub, "--accel", o.accel,
+                      "apparent gravity in the tank frame (e.g. 0,0,-9.81 at rest):\n"
+                      "up = -accel/|accel|; replaces --up, --pitch and --roll")
+                 ->type_name("AX,AY,AZ")
+                 ->group(attitude);
+  add_number(*sub, "--density", o.density, "mass per unit volume (default 1: mass = volume)")
+      ->type_name("RHO")
+      ->group(mass);
+  add_number(*sub, "--mass", o.mass,
+             "mass of the full tank instead; the density is M / tank volume")
+      ->type_name("M")
+      ->group(mass);
+  sub->add_flag("--json", o.json, "one JSON object on stdout")->group(output);
+  sub->add_flag("--csv", o.csv, "CSV with a commented header (tables and volume lists)")
+      ->group(output);
+  sub->add_flag("--force", o.force,
+                "compute even when the mesh is open, inconsistently oriented\n"
+                "or inside out (the same topology report as pgamesh check)")
+      ->group(output);
+  on_run(*sub, [a] { return run_fuel(*a); });
+}
 
 }  // namespace pgamesh::cli

@@ -57,9 +57,13 @@ int run_serve(int argc, char** argv) {
   return 2;
 }
 
-const RegisterCommand registered{
-    {"serve", "the viewer: a local web page with the mesh, its figures and fuel", run_serve, 80}};
-
 }  // namespace
+
+// The server parses its own options (apps/viewer/main.cpp): they pass through unchanged, --help
+// included, so `pgamesh serve --help` and `pgamesh help serve` print the server's usage.
+void add_serve_command(CLI::App& app) {
+  add_passthrough(app, "serve", "the viewer: a local web page with the mesh, its figures and fuel",
+                  run_serve);
+}
 
 }  // namespace pgamesh::cli

@@ -1,7 +1,13 @@
-// pgamesh — the command-line tool. `pgamesh <command> FILE [options]` (DESIGN.md §5).
+// pgamesh — the command-line tool. `pgamesh <command> FILE [options]` (README.md, The command
+// line). The commands are CLI11 sub-commands, each added by its cmd_NAME.cpp (commands.hpp says how
+// to add one). Exit status: the command's (0 success, 1 unreadable input), 2 for bad usage.
 #include <cstdio>
 #include <cstring>
+#include <exception>
+#include <memory>
+#include <sstream>
 #include <string>
+#include <vector>
 #ifdef __GLIBC__
 #include <malloc.h>
 #endif
@@ -10,20 +16,44 @@
 
 namespace {
 
-void print_usage(std::FILE* out) {
-  std::fprintf(out,
-               "usage: pgamesh <command> [FILE] [options]\n"
-               "\n"
-               "commands:\n");
-  for (const auto& c : pgamesh::cli::commands())
-    std::fprintf(out, "  %-8s %s\n", c.name, c.summary);
-  std::fprintf(out,
-               "\n"
-               "  pgamesh <command> --help   options of one command\n"
-               "  pgamesh --version          print the version\n");
+int command_status = 0;
+
+// CLI11's help, with the list of commands showing the first line of each description (the summary
+// of add_command); `pgamesh NAME --help` shows all of it.
+class Formatter : public CLI::Formatter {
+ public:
+  std::string make_subcommand(const CLI::App* sub) const override {
+    const std::string& description = sub->get_description();
+    std::stringstream out;
+    CLI::detail::format_help(out, sub->get_display_name(true),
+                             description.substr(0, description.find('\n')), get_column_width());
+    return out.str();
+  }
+};
+
+// The sub-command being parsed (for messages), or nullptr.
+const CLI::App* selected(const CLI::App& app) {
+  const auto subs = app.get_subcommands();
+  return subs.empty() ? nullptr : subs.front();
+}
+
+int usage_error(const CLI::App& app, const std::string& message) {
+  const CLI::App* sub = selected(app);
+  const std::string name = sub ? "pgamesh " + sub->get_name() : std::string("pgamesh");
+  std::fprintf(stderr, "%s: %s\n(%s --help for the options)\n", name.c_str(), message.c_str(),
+               name.c_str());
+  return 2;
 }
 
 }  // namespace
+
+namespace pgamesh::cli {
+
+void on_run(CLI::App& sub, std::function<int()> run) {
+  sub.callback([run = std::move(run)] { command_status = run(); });
+}
+
+}  // namespace pgamesh::cli
 
 int main(int argc, char** argv) {
 #ifdef __GLIBC__
@@ -34,22 +64,98 @@ int main(int argc, char** argv) {
   // props (docs/benchmarks.md).
   mallopt(M_MMAP_THRESHOLD, 128 * 1024);
 #endif
-  if (argc < 2) {
-    print_usage(stderr);
-    return 2;
-  }
-  const std::string first = argv[1];
-  if (first == "--version" || first == "version") {
+  using namespace pgamesh::cli;
+  CLI::App app("pgamesh: geometric-algebra mesh processing", "pgamesh");
+  auto formatter = std::make_shared<Formatter>();
+  formatter->column_width(26);
+  app.formatter(formatter);
+  app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);  // last one wins
+  app.require_subcommand(0, 1);  // one command; its arguments are never taken for another
+  app.set_version_flag("--version", std::string("pgamesh ") + PGAMESH_VERSION, "print the version");
+  app.footer(
+      "pgamesh <command> --help (or pgamesh help <command>) gives the options of one command.\n"
+      "Every command writes errors on stderr; exit status 0 on success, 1 for unreadable input,\n"
+      "2 for bad usage.");
+
+  // The commands, in the order of `pgamesh --help` (commands.hpp: how to add one).
+  add_props_command(app);
+  add_check_command(app);
+  add_fuel_command(app);
+  add_cga_command(app);
+  add_quadric_command(app);
+  add_fit_command(app);
+  for (const Command& c : commands()) add_passthrough(app, c.name, c.summary, c.run);
+  add_serve_command(app);
+  add_demo_command(app);
+  CLI::App* help = app.add_subcommand("help", "pgamesh help COMMAND: the options of COMMAND");
+  on_run(*help, [&app] {
+    // app.help() would give the help of the selected sub-command, `help` itself.
+    const std::string text =
+        app.get_formatter()->make_help(&app, app.get_name(), CLI::AppFormatMode::Normal);
+    std::fputs(text.c_str(), stdout);
+    return 0;
+  });
+  CLI::App* version = app.add_subcommand("version", "print the version")->group("");
+  on_run(*version, [] {
     std::printf("pgamesh %s\n", PGAMESH_VERSION);
     return 0;
+  });
+
+  if (argc < 2) {
+    std::fputs(app.help().c_str(), stderr);
+    return 2;
   }
-  if (first == "--help" || first == "-h" || first == "help") {
-    print_usage(stdout);
+  const auto known = [&app](const char* name) {
+    try {
+      app.get_subcommand(name);
+      return true;
+    } catch (const CLI::OptionNotFound&) {
+      return false;
+    }
+  };
+  if (argv[1][0] != '-' && !known(argv[1])) {
+    std::fprintf(stderr, "pgamesh: unknown command '%s'\n\n%s", argv[1], app.help().c_str());
+    return 2;
+  }
+  // A command that parses its own arguments gets them as given.
+  if (const PassthroughRun run = passthrough_run(argv[1])) return run(argc - 1, argv + 1);
+  // `pgamesh help COMMAND` is `pgamesh COMMAND --help`, word for word.
+  std::vector<char*> args(argv, argv + argc);
+  static char help_flag[] = "--help";
+  if (argc >= 3 && std::strcmp(argv[1], "help") == 0) {
+    if (!known(argv[2]) || std::strcmp(argv[2], "help") == 0) {
+      std::fprintf(stderr, "pgamesh help: unknown command '%s'\n\n%s", argv[2], app.help().c_str());
+      return 2;
+    }
+    if (const PassthroughRun run = passthrough_run(argv[2])) {
+      char* help_args[] = {argv[2], help_flag, nullptr};
+      return run(2, help_args);
+    }
+    args = {argv[0], argv[2], help_flag};
+  }
+
+  try {
+    app.parse(static_cast<int>(args.size()), args.data());
+  } catch (const CLI::CallForHelp&) {
+    const CLI::App* sub = selected(app);
+    std::fputs(sub ? sub->help(app.get_name()).c_str() : app.help().c_str(), stdout);
     return 0;
+  } catch (const CLI::CallForVersion& e) {
+    std::printf("%s\n", e.what());
+    return 0;
+  } catch (const CLI::ParseError& e) {
+    return usage_error(app, e.what());
+  } catch (const UsageError& e) {
+    return usage_error(app, e.what());
+  } catch (const std::exception& e) {
+    const CLI::App* sub = selected(app);
+    std::fprintf(stderr, "pgamesh%s%s: %s\n", sub ? " " : "", sub ? sub->get_name().c_str() : "",
+                 e.what());
+    return 1;
   }
-  for (const auto& c : pgamesh::cli::commands())
-    if (first == c.name) return c.run(argc - 1, argv + 1);
-  std::fprintf(stderr, "pgamesh: unknown command '%s'\n\n", first.c_str());
-  print_usage(stderr);
-  return 2;
+  if (!selected(app)) {
+    std::fputs(app.help().c_str(), stderr);
+    return 2;
+  }
+  return command_status;
 }

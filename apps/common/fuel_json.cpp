@@ -16,70 +16,60 @@ std::string num(double v) {
 
 }  // namespace
 
-void write_fuel_state(JsonWriter& w, const tank::FuelState& st, const tank::LevelRange& range,
+void write_fuel_state(Json& w, const tank::FuelState& st, const tank::LevelRange& range,
                       double density) {
-  w.number("level", st.plane.level);
-  w.number("volume", st.volume);
-  w.number("fraction", st.fraction);
-  w.number("mass", density * st.volume);
+  w["level"] = json_number(st.plane.level);
+  w["volume"] = json_number(st.volume);
+  w["fraction"] = json_number(st.fraction);
+  w["mass"] = json_number(density * st.volume);
   if (st.has_center) {
-    w.vec3("center_of_mass", st.center_of_mass);
+    w["center_of_mass"] = json_vec3(st.center_of_mass);
     Mat3 inertia = st.inertia_com;
     for (auto& row : inertia)
       for (double& x : row) x *= density;
-    w.matrix3("inertia_com", inertia);
+    w["inertia_com"] = json_matrix3(inertia);
   } else {
-    w.null("center_of_mass");
-    w.null("inertia_com");
+    w["center_of_mass"] = nullptr;
+    w["inertia_com"] = nullptr;
   }
-  w.number("wetted_area", st.wetted_area);
-  w.number("surface_area", st.surface_area);
-  if (st.surface.area > 0) {
-    w.vec3("surface_centroid", st.surface.centroid);
-  } else {
-    w.null("surface_centroid");
-  }
-  w.begin_array("surface_axes").vec3(st.surface.axis1).vec3(st.surface.axis2).end_array();
+  w["wetted_area"] = json_number(st.wetted_area);
+  w["surface_area"] = json_number(st.surface_area);
+  w["surface_centroid"] = st.surface.area > 0 ? json_vec3(st.surface.centroid) : Json(nullptr);
+  const Json axis1 = json_vec3(st.surface.axis1), axis2 = json_vec3(st.surface.axis2);
+  w["surface_axes"] =
+      axis1.is_null() || axis2.is_null() ? Json(nullptr) : Json::array({axis1, axis2});
   const auto& m = st.surface.second;
-  w.begin_array("surface_second_moment")
-      .begin_array()
-      .number(m[0])
-      .number(m[2])
-      .end_array()
-      .begin_array()
-      .number(m[2])
-      .number(m[1])
-      .end_array()
-      .end_array();
-  w.number("surface_moment_transverse", m[1]);
-  w.number("surface_moment_longitudinal", m[0]);
-  w.number("ullage_volume", st.ullage_volume);
-  w.number("ullage_length", range.highest - st.plane.level);
+  const bool moments = std::isfinite(m[0]) && std::isfinite(m[1]) && std::isfinite(m[2]);
+  w["surface_second_moment"] =
+      moments ? Json::array({Json::array({m[0], m[2]}), Json::array({m[2], m[1]})}) : Json(nullptr);
+  w["surface_moment_transverse"] = json_number(m[1]);
+  w["surface_moment_longitudinal"] = json_number(m[0]);
+  w["ullage_volume"] = json_number(st.ullage_volume);
+  w["ullage_length"] = json_number(range.highest - st.plane.level);
 }
 
-void write_fuel_conventions(JsonWriter& w) {
-  w.begin_object("conventions");
-  w.string("plane", "up . x = level, up a unit vector in the tank frame; fuel is up . x <= level");
-  w.string("tank_frame", "x forward, y left, z up (right-handed)");
-  w.string("attitude",
-           "pitch about the lateral axis, positive nose up, then roll about the forward axis, "
-           "positive right side down; degrees; up = (sin p, sin r cos p, cos r cos p) for a level "
-           "up of +z");
-  w.string("density",
-           "mass per unit volume (top-level density; 1 unless --density or --mass): mass = "
-           "density x volume, inertia = density x the volume's second moments");
-  w.string("inertia",
-           "tensor about the centre of mass, off-diagonals are minus the products of "
-           "inertia (I_xy = -integral of x y dV)");
-  w.string("surface_axes",
-           "axis1 = the tank x axis projected onto the free surface, axis2 = up x axis1");
-  w.string("surface_second_moment",
-           "[[int s1^2, int s1 s2], [int s1 s2, int s2^2]] dA about the surface centroid; "
-           "transverse = int s2^2 (about axis1), longitudinal = int s1^2 (about axis2)");
-  w.string("units",
-           "lengths in the mesh file's unit L: areas L^2, volumes L^3, moments of area L^4, "
-           "mass in the density's unit times L^3, inertia mass x L^2");
-  w.end_object();
+Json fuel_conventions() {
+  Json c;
+  c["plane"] = "up . x = level, up a unit vector in the tank frame; fuel is up . x <= level";
+  c["tank_frame"] = "x forward, y left, z up (right-handed)";
+  c["attitude"] =
+      "pitch about the lateral axis, positive nose up, then roll about the forward axis, "
+      "positive right side down; degrees; up = (sin p, sin r cos p, cos r cos p) for a level "
+      "up of +z";
+  c["density"] =
+      "mass per unit volume (top-level density; 1 unless --density or --mass): mass = "
+      "density x volume, inertia = density x the volume's second moments";
+  c["inertia"] =
+      "tensor about the centre of mass, off-diagonals are minus the products of "
+      "inertia (I_xy = -integral of x y dV)";
+  c["surface_axes"] = "axis1 = the tank x axis projected onto the free surface, axis2 = up x axis1";
+  c["surface_second_moment"] =
+      "[[int s1^2, int s1 s2], [int s1 s2, int s2^2]] dA about the surface centroid; "
+      "transverse = int s2^2 (about axis1), longitudinal = int s1^2 (about axis2)";
+  c["units"] =
+      "lengths in the mesh file's unit L: areas L^2, volumes L^3, moments of area L^4, "
+      "mass in the density's unit times L^3, inertia mass x L^2";
+  return c;
 }
 
 std::string fuel_csv_columns(bool attitude) {

@@ -1,5 +1,5 @@
-// The JSON of `pgamesh props` (DESIGN.md §5 stable fields first, then the additions).
-#include "json_writer.hpp"
+// The JSON of `pgamesh props` (docs/json.md: stable fields first, then the additions).
+#include "json_text.hpp"
 #include "pgamesh/io/mesh_format.hpp"
 #include "props_report.hpp"
 
@@ -7,8 +7,9 @@ namespace pgamesh::cli {
 
 namespace {
 
-void products(JsonWriter& w, std::string_view key, const ProductsOfInertia& p) {
-  w.begin_object(key).number("xy", p.xy).number("yz", p.yz).number("zx", p.zx).end_object();
+Json products(const ProductsOfInertia& p) {
+  if (!std::isfinite(p.xy) || !std::isfinite(p.yz) || !std::isfinite(p.zx)) return nullptr;
+  return Json{{"xy", p.xy}, {"yz", p.yz}, {"zx", p.zx}};
 }
 
 }  // namespace
@@ -16,97 +17,80 @@ void products(JsonWriter& w, std::string_view key, const ProductsOfInertia& p) {
 std::string props_json(const Analysis& r) {
   const MassProperties& m = r.mass;
   const bool solid = std::isfinite(m.center_of_mass.x);
-  JsonWriter w;
-  w.begin_object();
-  w.integer("triangles", m.triangles);
-  w.integer("vertices", r.topology ? r.topology->vertices : m.vertices);
-  w.number("area", m.area);
-  w.number("volume", m.volume);
-  w.number("density", m.density);
-  w.number("mass", m.mass);
-  w.vec3("center_of_mass", m.center_of_mass);
-  w.matrix3("inertia_com", m.inertia_com);
-  w.matrix3("inertia_origin", m.inertia_origin);
-  w.begin_array("principal_moments");
-  for (double v : m.principal.moments) w.number(v);
-  w.end_array();
+  Json j;
+  j["triangles"] = m.triangles;
+  j["vertices"] = r.topology ? r.topology->vertices : m.vertices;
+  j["area"] = json_number(m.area);
+  j["volume"] = json_number(m.volume);
+  j["density"] = json_number(m.density);
+  j["mass"] = json_number(m.mass);
+  j["center_of_mass"] = json_vec3(m.center_of_mass);
+  j["inertia_com"] = json_matrix3(m.inertia_com);
+  j["inertia_origin"] = json_matrix3(m.inertia_origin);
+  const auto& pm = m.principal.moments;
+  j["principal_moments"] = json_vec3({pm[0], pm[1], pm[2]});
   if (solid) {
-    w.begin_array("principal_axes");
-    for (const Vec3d& a : m.principal.axes) w.vec3(a);
-    w.end_array();
+    Json axes = Json::array();
+    for (const Vec3d& a : m.principal.axes) axes.push_back(json_vec3(a));
+    j["principal_axes"] = std::move(axes);
   } else {
-    w.null("principal_axes");
+    j["principal_axes"] = nullptr;
   }
-  w.number("gap_area", m.gap_area);
+  j["gap_area"] = json_number(m.gap_area);
   if (r.topology) {
     const TopologyReport& t = *r.topology;
-    w.boolean("closed", t.closed);
-    w.integer("boundary_edges", t.boundary_edges);
-    w.integer("nonmanifold_edges", t.nonmanifold_edges);
-    w.boolean("orientation_consistent", t.orientation_consistent);
+    j["closed"] = t.closed;
+    j["boundary_edges"] = t.boundary_edges;
+    j["nonmanifold_edges"] = t.nonmanifold_edges;
+    j["orientation_consistent"] = t.orientation_consistent;
   } else {
-    w.null("closed")
-        .null("boundary_edges")
-        .null("nonmanifold_edges")
-        .null("orientation_consistent");
+    j["closed"] = nullptr;
+    j["boundary_edges"] = nullptr;
+    j["nonmanifold_edges"] = nullptr;
+    j["orientation_consistent"] = nullptr;
   }
   // Additions.
-  w.string("file", r.file);
-  w.string("format", format_name(r.format));
-  w.boolean("single_precision", r.single_precision);
-  w.boolean("streamed", r.streamed);
-  w.integer("faces", m.faces);
-  w.integer("input_vertices", m.vertices);
-  w.string("density_source", r.density_from_mass ? "mass" : "density");
-  products(w, "products_of_inertia_com", m.products_com);
-  products(w, "products_of_inertia_origin", m.products_origin);
-  w.boolean("principal_degenerate", m.principal.degenerate);
+  j["file"] = r.file;
+  j["format"] = format_name(r.format);
+  j["single_precision"] = r.single_precision;
+  j["streamed"] = r.streamed;
+  j["faces"] = m.faces;
+  j["input_vertices"] = m.vertices;
+  j["density_source"] = r.density_from_mass ? "mass" : "density";
+  j["products_of_inertia_com"] = products(m.products_com);
+  j["products_of_inertia_origin"] = products(m.products_origin);
+  j["principal_degenerate"] = m.principal.degenerate;
   if (solid) {
     const auto& q = m.principal_motor;
-    w.begin_object("principal_motor")
-        .number("1", q.s)
-        .number("e01", q.e01)
-        .number("e02", q.e02)
-        .number("e03", q.e03)
-        .number("e12", q.e12)
-        .number("e31", q.e31)
-        .number("e23", q.e23)
-        .number("e0123", q.e0123)
-        .end_object();
+    j["principal_motor"] = Json{{"1", q.s},     {"e01", q.e01}, {"e02", q.e02}, {"e03", q.e03},
+                                {"e12", q.e12}, {"e31", q.e31}, {"e23", q.e23}, {"e0123", q.e0123}};
   } else {
-    w.null("principal_motor");
+    j["principal_motor"] = nullptr;
   }
-  w.string("principal_motor_convention",
-           "M = T R: M o ~M = centre of mass, M e_i ~M = principal axis i (directions); ~M takes "
-           "the body into its principal frame");
-  w.string("convention", inertia_convention);
-  w.vec3("reference_point", m.reference_point);
-  w.plane("carrier_sum", m.carrier_sum);
+  j["principal_motor_convention"] =
+      "M = T R: M o ~M = centre of mass, M e_i ~M = principal axis i (directions); ~M takes the "
+      "body into its principal frame";
+  j["convention"] = inertia_convention;
+  j["reference_point"] = json_vec3(m.reference_point);
+  j["carrier_sum"] = json_plane(m.carrier_sum);
   if (r.topology) {
     const TopologyReport& t = *r.topology;
-    w.begin_object("topology")
-        .integer("edges", t.edges)
-        .integer("merged_vertices", t.merged_vertices)
-        .integer("inconsistent_edges", t.inconsistent_edges)
-        .integer("boundary_loops", t.boundary_loops.size())
-        .integer("duplicated_faces", t.duplicated_faces)
-        .integer("zero_area_faces", t.zero_area_faces)
-        .integer("components", t.components)
-        .integer("closed_components", t.closed_components)
-        .number("volume_min", t.volume_min)
-        .number("volume_max", t.volume_max)
-        .end_object();
+    j["topology"] = Json{{"edges", t.edges},
+                         {"merged_vertices", t.merged_vertices},
+                         {"inconsistent_edges", t.inconsistent_edges},
+                         {"boundary_loop_count", t.boundary_loops.size()},
+                         {"duplicated_faces", t.duplicated_faces},
+                         {"zero_area_faces", t.zero_area_faces},
+                         {"components", t.components},
+                         {"closed_components", t.closed_components},
+                         {"volume_range", json_range(t.volume_min, t.volume_max)}};
   } else {
-    w.null("topology");
+    j["topology"] = nullptr;
   }
-  if (r.volume_valid)
-    w.boolean("meaningful", *r.volume_valid);
-  else
-    w.null("meaningful");
-  w.strings("meaningful_reasons", r.reasons);
-  w.strings("warnings", r.warnings);
-  w.end_object();
-  return w.str();
+  j["volume_valid"] = r.volume_valid ? Json(*r.volume_valid) : Json(nullptr);
+  j["reasons"] = json_strings(r.reasons);
+  j["warnings"] = json_strings(r.warnings);
+  return json_text(j);
 }
 
 }  // namespace pgamesh::cli

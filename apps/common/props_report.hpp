@@ -9,7 +9,7 @@
 
 namespace pgamesh::cli {
 
-// One JSON object (DESIGN.md §5 fields and more; numbers %.17g; undefined values null).
+// One JSON object (docs/mass-properties.md fields and more; numbers %.17g; undefined values null).
 std::string props_json(const Analysis& report);
 
 // The readable report; `about_origin` adds the inertia tensor about the coordinate origin.

@@ -51,7 +51,8 @@ std::string not_meaningful_comment(const Analysis& r) {
 }
 
 // The rotor's quaternion (w, x, y, z): R = cos(θ/2) − sin(θ/2)(a_x e23 + a_y e31 + a_z e12) turns
-// by +θ about a (ERRATA §0.1), the quaternion cos(θ/2) + sin(θ/2)(a_x i + a_y j + a_z k).
+// by +θ about a (docs/conventions.md §7), the quaternion
+// cos(θ/2) + sin(θ/2)(a_x i + a_y j + a_z k).
 std::array<double, 4> quaternion(const pga3::Motor<double>& r) {
   return {r.s, -r.e23, -r.e31, -r.e12};
 }

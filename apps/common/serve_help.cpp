@@ -3,21 +3,21 @@
 namespace pgamesh::cli {
 
 void print_serve_help(std::FILE* out) {
-  std::fprintf(
-      out,
-      "usage: pgamesh serve [FILE...] [options]\n"
-      "\n"
-      "Starts the viewer: a local web page showing meshes, their mass properties and\n"
-      "fuel, with a JSON API. Open the printed URL in a browser. Ctrl-C stops it.\n"
-      "FILEs named here are listed on the page beside the bundled meshes.\n"
-      "\n"
-      "options:\n"
-      "  --port P          TCP port (default 8080; 0 picks a free one)\n"
-      "  --host H          address to bind (default 127.0.0.1, this machine only)\n"
-      "  --max-upload N    largest accepted upload in bytes, suffix K, M or G allowed\n"
-      "                    (default 64M)\n"
-      "  --assets DIR      folder of the page (default: the source tree's apps/viewer/web)\n"
-      "  --quiet           do not log each request on stderr\n");
+  std::fprintf(out,
+               "usage: pgamesh serve [FILE...] [options]\n"
+               "\n"
+               "Starts the viewer: a local web page showing meshes, their mass properties and\n"
+               "fuel, with a JSON API. Open the printed URL in a browser. Ctrl-C stops it.\n"
+               "FILEs named here are listed on the page beside the bundled meshes.\n"
+               "\n"
+               "options:\n"
+               "  --port P          TCP port (default 8080; 0 picks a free one)\n"
+               "  --host H          address to bind (default 127.0.0.1, this machine only)\n"
+               "  --max-upload N    largest accepted upload in bytes, suffix K, M or G allowed\n"
+               "                    (default 64M)\n"
+               "  --assets DIR      folder of the page (default: <prefix>/share/pgamesh/web when\n"
+               "                    installed, else the source tree's apps/viewer/web)\n"
+               "  --quiet           do not log each request on stderr\n");
 }
 
 }  // namespace pgamesh::cli

@@ -1,6 +1,7 @@
 // The page's own files, served from memory. A fixed table maps each URL to one file under the web
 // folder; every file is read once at start-up. No filesystem path is ever built from a request, so
-// nothing outside the table can be served (DESIGN.md §7: a server serves only its own assets).
+// nothing outside the table can be served (docs/viewer.md, Limits and safety: a server serves only
+// its own assets).
 #pragma once
 
 #include <map>

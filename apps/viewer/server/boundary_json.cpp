@@ -1,34 +1,27 @@
 #include "boundary_json.hpp"
 
-#include "json_writer.hpp"
+#include "json_text.hpp"
 
 namespace pgamesh::viewer {
 
 std::string boundary_json(const TopologyReport& t) {
-  cli::JsonWriter w;
-  w.begin_object();
-  w.integer("boundary_edges", t.boundary_edges);
-  w.begin_array("segments");
+  using cli::Json;
+  Json segments = Json::array();
   for (const EdgeLocation& e : t.boundary_edge_list)
-    w.begin_array()
-        .number(e.p0.x)
-        .number(e.p0.y)
-        .number(e.p0.z)
-        .number(e.p1.x)
-        .number(e.p1.y)
-        .number(e.p1.z)
-        .end_array();
-  w.end_array();
-  w.begin_array("loops");
-  for (const BoundaryLoop& l : t.boundary_loops) {
-    w.begin_object().number("area", l.area).number("perimeter", l.perimeter);
-    w.vec3("vector_area", l.vector_area);
-    w.end_object();
-  }
-  w.end_array();
-  w.number("gap_area", t.gap_area);
-  w.end_object();
-  return w.str();
+    segments.push_back(Json::array({cli::json_number(e.p0.x), cli::json_number(e.p0.y),
+                                    cli::json_number(e.p0.z), cli::json_number(e.p1.x),
+                                    cli::json_number(e.p1.y), cli::json_number(e.p1.z)}));
+  Json loops = Json::array();
+  for (const BoundaryLoop& l : t.boundary_loops)
+    loops.push_back(Json{{"area", cli::json_number(l.area)},
+                         {"perimeter", cli::json_number(l.perimeter)},
+                         {"vector_area", cli::json_vec3(l.vector_area)}});
+  Json w;
+  w["boundary_edges"] = t.boundary_edges;
+  w["segments"] = std::move(segments);
+  w["loops"] = std::move(loops);
+  w["gap_area"] = cli::json_number(t.gap_area);
+  return cli::json_text(w);
 }
 
 }  // namespace pgamesh::viewer

@@ -57,12 +57,14 @@ std::shared_ptr<const FuelModel> read_tank(MeshStore& store, const httplib::Requ
   return model;
 }
 
-void write_header(cli::JsonWriter& w, const FuelModel& model, const Attitude& a,
+void write_header(cli::Json& w, const FuelModel& model, const Attitude& a,
                   const tank::LevelRange& range) {
-  w.begin_array("up").number(a.up.x).number(a.up.y).number(a.up.z).end_array();
-  w.number("pitch_deg", a.pitch_deg).number("roll_deg", a.roll_deg);
-  w.number("tank_volume", model.tank.volume);
-  w.number("lowest", range.lowest).number("highest", range.highest);
+  w["up"] = cli::json_vec3(a.up);
+  w["pitch_deg"] = cli::json_number(a.pitch_deg);
+  w["roll_deg"] = cli::json_number(a.roll_deg);
+  w["tank_volume"] = cli::json_number(model.tank.volume);
+  w["lowest"] = cli::json_number(range.lowest);
+  w["highest"] = cli::json_number(range.highest);
 }
 
 void fuel_query(MeshStore& store, const httplib::Request& req, httplib::Response& res) {
@@ -76,8 +78,7 @@ void fuel_query(MeshStore& store, const httplib::Request& req, httplib::Response
   const auto model = read_tank(store, req, res);
   if (!model) return;
   const tank::LevelRange range = model->index->range(a.up);
-  cli::JsonWriter w;
-  w.begin_object();
+  cli::Json w;
   write_header(w, *model, a, range);
   if (by_level) {
     // No silent clamping: outside the tank is an answer of its own (as `pgamesh fuel` says).
@@ -94,12 +95,11 @@ void fuel_query(MeshStore& store, const httplib::Request& req, httplib::Response
     } catch (const std::domain_error& e) {
       return send_error(res, 422, std::string("volume ") + fmt(target) + ": " + e.what());
     }
-    w.number("target_volume", target);
-    w.integer("iterations", static_cast<unsigned long long>(s.iterations));
+    w["target_volume"] = cli::json_number(target);
+    w["iterations"] = s.iterations;
     cli::write_fuel_state(w, model->index->query(tank::FuelPlane{a.up, s.level}), range);
   }
-  w.end_object();
-  send_raw_json(res, w.str());
+  send_raw_json(res, cli::json_text(w));
 }
 
 void fuel_table(MeshStore& store, const httplib::Request& req, httplib::Response& res) {
@@ -117,18 +117,15 @@ void fuel_table(MeshStore& store, const httplib::Request& req, httplib::Response
   if (!model) return;
   const tank::LevelRange range = model->index->range(a.up);
   const auto rows = tank::fuel_sweep(model->tank, a.up, tank::even_levels(range, n));
-  cli::JsonWriter w;
-  w.begin_object();
+  cli::Json w;
   write_header(w, *model, a, range);
-  w.begin_array("rows");
+  cli::Json& out = w["rows"] = cli::Json::array();
   for (const tank::FuelState& st : rows) {
-    w.begin_object();
-    cli::write_fuel_state(w, st, range);
-    w.end_object();
+    cli::Json row;
+    cli::write_fuel_state(row, st, range);
+    out.push_back(std::move(row));
   }
-  w.end_array();
-  w.end_object();
-  send_raw_json(res, w.str());
+  send_raw_json(res, cli::json_text(w));
 }
 
 }  // namespace

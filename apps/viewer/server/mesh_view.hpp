@@ -19,7 +19,7 @@ struct Bounds {
 Bounds face_vertex_bounds(const Mesh& mesh);
 
 /// The point the page draws about: the centre of the bounds. Coordinates go to the page relative to
-/// it, so float32 keeps its precision for meshes far from the origin (DESIGN.md §4).
+/// it, so float32 keeps its precision for meshes far from the origin (docs/conventions.md §13).
 Vec3d drawing_origin(const Mesh& mesh);
 
 /// {id, name, format, single_precision, vertices, faces, triangles, bounds{min,max},

@@ -29,8 +29,8 @@ export class PropsPanel {
       const p = await api.getProps(mesh.id, density);
       if (seq !== this.seq) return;
       // Figures of an open or inconsistent surface are shown, with why they are not a solid's.
-      this.onStatus(p.meaningful === false
-        ? `Not the figures of a solid: ${p.meaningful_reasons.join('; ')}` : null);
+      this.onStatus(p.volume_valid === false
+        ? `Not the figures of a solid: ${p.reasons.join('; ')}` : null);
       this.show(p);
       if (view) this.draw(p);
       if (p.boundary_edges > 0 && this.state.info.features.check) {
@@ -72,7 +72,7 @@ export class PropsPanel {
     const view = this.state.view;
     view.setLayer('boundary', null);
     const com = p.center_of_mass;
-    if (!com || com.some((c) => c === null)) {
+    if (!com) {  // null when undefined (docs/json.md)
       view.setLayer('com', null);
       view.setLayer('axes', null);
       return;
