@@ -1,25 +1,27 @@
-// The expression language of `pgamesh calc` (docs/calc.md): numbers, basis blades by name,
-// `+ - * /`, `^ & | ~ !`, parentheses, functions and `let` names, evaluated on the general
-// Clifford engine. Errors carry the 1-based column of the offending token; nothing throws out.
+// The evaluator of `pgamesh calc` (docs/calc.md): an algebra, the names a script defines with
+// `let`, and the evaluation of the expression trees of calc_syntax.hpp on the general Clifford
+// engine. Functions come from the table of calc_functions.hpp; numbers are printed by
+// calc_print.hpp. Errors carry the 1-based column of the offending token; nothing throws out.
 #pragma once
 
 #include <map>
 #include <optional>
 #include <string>
 #include <string_view>
-#include <vector>
 
+#include "calc_syntax.hpp"
 #include "pgamesh/algebra/clifford.hpp"
 
 namespace pgamesh::cli {
 
-// How `point(...)` embeds Euclidean coordinates in an algebra.
-enum class PointModel { none, pga, cga, dpga, dcga, qcga };
+// The geometric model an algebra carries: how `point(...)` embeds Euclidean coordinates and
+// which model functions (sphere, quadric, …) apply.
+enum class CalcModel { none, pga, cga, dpga, dcga, qcga };
 
 struct CalcAlgebra {
   std::string name;
   clifford::Algebra algebra;
-  PointModel model = PointModel::none;
+  CalcModel model = CalcModel::none;
   int point_dimension = 0;  // coordinates point() takes
   bool degenerate = false;  // has null generators in a diagonal form (PGA): coefficient norms
 };
@@ -45,24 +47,19 @@ class Calculator {
   // Evaluates one statement: `let NAME = EXPR` or `EXPR`.
   CalcResult run(std::string_view statement);
 
-  // The readable form "1 + 2 e12 - 0.5 e0123" ("0" for zero).
-  std::string format(const clifford::Multivector& m) const;
-  // The JSON object {"blade": coefficient, ...} (full precision).
-  std::string format_json(const clifford::Multivector& m) const;
-
   const CalcAlgebra& algebra() const { return alg_; }
 
  private:
+  clifford::Multivector eval(const Expr& e, std::size_t depth = 0) const;
+  clifford::Multivector eval_chain(const Expr& e, std::size_t depth) const;
+  clifford::Multivector eval_name(const Expr& e) const;
+  clifford::Multivector eval_call(const Expr& e, std::size_t depth) const;
+
   CalcAlgebra alg_;
   std::map<std::string, clifford::Multivector> names_;
 };
 
-// Splits a script into statements at ';' and newlines; each with its 1-based line and the column
-// where it starts. Comments run from '#' to the end of the line.
-struct Statement {
-  std::string text;
-  std::size_t line = 1, column = 1;
-};
-std::vector<Statement> split_statements(std::string_view script);
+// True when NAME is a constant (pi, I) or a function: such names cannot be redefined by `let`.
+bool is_reserved_name(std::string_view name);
 
 }  // namespace pgamesh::cli

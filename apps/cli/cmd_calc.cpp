@@ -1,11 +1,14 @@
 // `pgamesh calc`: a calculator on the general Clifford engine (docs/calc.md).
-//   pgamesh calc [--algebra NAME] [--json] 'EXPR; let a = EXPR; ...'
-//   pgamesh calc [--algebra NAME] [--json] < script        (or EXPR = '-')
+//   pgamesh calc [--algebra NAME] [--json] [--digits N] 'EXPR; let a = EXPR; ...'
+//   pgamesh calc [--algebra NAME] [--json] [--digits N] < script        (or EXPR = '-')
+#include <charconv>
 #include <cstdio>
 #include <cstring>
 #include <string>
 
 #include "calc_eval.hpp"
+#include "calc_functions.hpp"
+#include "calc_print.hpp"
 #include "commands.hpp"
 
 namespace pgamesh::cli {
@@ -15,28 +18,53 @@ namespace {
 constexpr std::size_t max_script_bytes = std::size_t{1} << 24;  // 16 MiB of expressions
 
 void calc_usage(std::FILE* out) {
+  std::fprintf(
+      out,
+      "usage: pgamesh calc [--algebra NAME] [--json] [--digits N] ['EXPR; let x = EXPR; ...' | -]\n"
+      "\n"
+      "Evaluates geometric-algebra expressions; without EXPR (or with '-') reads\n"
+      "statements from stdin, one per line or separated by ';'.\n"
+      "\n"
+      "  --algebra NAME  pga2, pga3 (default), pga1..pga6, cga3 (eo, ei), dpga, dcga,\n"
+      "                  qcga, or p,q,r (e.g. 4,1,0)\n"
+      "  --json          one JSON document: {\"algebra\", \"results\": [{\"line\", \"column\",\n"
+      "                  \"expression\", \"value\": {\"blade\": coefficient, ...}}, ...]}\n"
+      "  --digits N      significant digits of the readable output (1..17, default 15)\n"
+      "\n"
+      "operators: + - * / (geometric), ^ (outer/meet), & (join), | (inner), ~ (reverse),\n"
+      "           ! (Hodge complement); ^ & | bind tighter than * and /, then + -\n"
+      "constants: pi, I (the pseudoscalar)\n"
+      "functions:\n");
+  for (const FunctionInfo& f : general_functions())
+    std::fprintf(out, "  %-16s %.*s\n", std::string(f.signature).c_str(),
+                 static_cast<int>(f.summary.size()), f.summary.data());
+  std::fprintf(out, "models (docs/calc.md, Models):\n");
+  static constexpr struct {
+    CalcModel model;
+    const char* name;
+  } models[] = {{CalcModel::pga, "pgaN"},
+                {CalcModel::cga, "cga3"},
+                {CalcModel::dpga, "dpga"},
+                {CalcModel::dcga, "dcga"},
+                {CalcModel::qcga, "qcga"}};
+  for (const auto& m : models)
+    std::fprintf(out, "  %-5s %s\n", m.name, function_names_for(m.model).c_str());
   std::fprintf(out,
-               "usage: pgamesh calc [--algebra NAME] [--json] ['EXPR; let x = EXPR; ...' | -]\n"
-               "\n"
-               "Evaluates geometric-algebra expressions; without EXPR (or with '-') reads\n"
-               "statements from stdin, one per line or separated by ';'.\n"
-               "\n"
-               "  --algebra NAME  pga2, pga3 (default), pga1..pga6, cga3 (eo, ei), dpga, dcga,\n"
-               "                  qcga, or p,q,r (e.g. 4,1,0)\n"
-               "  --json          print each result as {\"blade\": coefficient, ...}\n"
-               "\n"
-               "operators: + - * / (geometric), ^ (outer/meet), & (join), | (inner), ~ (reverse),\n"
-               "           ! (dual); ^ & | bind tighter than * and /, which bind tighter than + -\n"
-               "functions: exp log sqrt dual undual reverse involute conjugate inverse norm inorm\n"
-               "           grade(X,k) lc(A,B) rc(A,B) sp(A,B) cross(A,B) point(x,y[,z...]); pi\n"
-               "example:   pgamesh calc --algebra pga3 'point(1,0,0) & point(0,1,0)'\n");
+               "example:   pgamesh calc --algebra pga3 'point(1,0,0) & point(0,1,0)'\n"
+               "           pgamesh calc --algebra cga3 'radius(sphere(point(1,0,0), "
+               "point(0,1,0), point(-1,0,0), point(0,0,1)))'\n");
 }
 
-}  // namespace
+std::string trimmed(const std::string& s) {
+  const auto b = s.find_first_not_of(" \t\r");
+  const auto e = s.find_last_not_of(" \t\r");
+  return b == std::string::npos ? std::string() : s.substr(b, e - b + 1);
+}
 
-static int run_calc(int argc, char** argv) {
+int run_calc(int argc, char** argv) {
   std::string algebra_name = "pga3";
   bool json = false;
+  TextFormat text;
   std::string expr;
   bool have_expr = false;
   for (int i = 1; i < argc; ++i) {
@@ -54,6 +82,13 @@ static int run_calc(int argc, char** argv) {
       algebra_name = argv[++i];
     } else if (a.rfind("--algebra=", 0) == 0) {
       algebra_name = a.substr(10);
+    } else if (a == "--digits") {
+      const char* v = i + 1 < argc ? argv[++i] : "";
+      const auto r = std::from_chars(v, v + std::strlen(v), text.digits);
+      if (r.ec != std::errc() || *r.ptr != '\0' || text.digits < 1 || text.digits > 17) {
+        std::fprintf(stderr, "pgamesh calc: --digits needs a whole number from 1 to 17\n");
+        return 2;
+      }
     } else if (!have_expr && a.rfind("--", 0) != 0) {
       expr = a;  // anything but an option, so an expression may start with '-': -e1 + 2
       have_expr = true;
@@ -85,6 +120,10 @@ static int run_calc(int argc, char** argv) {
     }
   }
   Calculator calc(std::move(*alg));
+  Json document = Json::object();
+  document["algebra"] = calc.algebra().name;
+  document["results"] = Json::array();
+  int status = 0;
   for (const Statement& s : split_statements(expr)) {
     const CalcResult r = calc.run(s.text);
     if (r.error) {
@@ -95,20 +134,33 @@ static int run_calc(int argc, char** argv) {
       else
         std::fprintf(stderr, "pgamesh calc: error at column %zu: %s\n", column,
                      r.error->message.c_str());
-      return 1;
+      document["error"] = {{"line", s.line}, {"column", column}, {"message", r.error->message}};
+      status = 1;
+      break;
     }
-    if (r.value) {
-      const std::string out = json ? calc.format_json(*r.value) : calc.format(*r.value);
+    if (!r.value) continue;
+    if (json) {
+      const std::size_t lead = s.text.find_first_not_of(" \t\r");
+      document["results"].push_back({{"line", s.line},
+                                     {"column", s.column + (lead == std::string::npos ? 0 : lead)},
+                                     {"expression", trimmed(s.text)},
+                                     {"value", format_json(calc.algebra().algebra, *r.value)}});
+    } else {
+      const std::string out = format_text(calc.algebra().algebra, *r.value, text);
       std::fwrite(out.data(), 1, out.size(), stdout);
       std::fputc('\n', stdout);
     }
   }
-  return 0;
+  if (json) {
+    const std::string doc = json_text(document) + "\n";
+    std::fwrite(doc.data(), 1, doc.size(), stdout);
+  }
+  return status;
 }
 
-namespace {
 const RegisterCommand registered{
     {"calc", "geometric-algebra calculator: PGA, CGA, quadric models, any R(p,q,r)", run_calc, 80}};
+
 }  // namespace
 
 }  // namespace pgamesh::cli
