@@ -3,10 +3,10 @@
 # only for what is missing. Usage: scripts/setup.sh [build|test|bench]
 set -euo pipefail
 what=${1:-build}
-pkgs=(cmake g++ make pkg-config libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev
-      libgmp-dev libcpp-httplib-dev)
+pkgs=(cmake ninja-build g++ make pkg-config libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev
+      libgmp-dev libcpp-httplib-dev libcli11-dev)
 case "$what" in
-  test) pkgs+=(clang libclang-rt-14-dev clang-format chromium) ;;
+  test) pkgs+=(clang libclang-rt-14-dev clang-format chromium curl) ;;
   bench) pkgs+=(admesh hyperfine libcgal-dev python3-vtk9 python3-stl python3-open3d python3-numpy time) ;;
 esac
 # The viewer's page needs node and npm (for three.js and, in tests, playwright-core): Debian's

@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
-# Quick start, command 2: install what is needed and run every test — the release build with
-# warnings as errors, the same suite under AddressSanitizer + UndefinedBehaviorSanitizer, the
-# format check and a bounded libFuzzer run of every reader.
+# Quick start, command 2: install what is needed and run every test. The tests are compiled once,
+# under AddressSanitizer + UndefinedBehaviorSanitizer (warnings as errors), and run there; the
+# release build makes only the programs the CLI-level stages use (the installed package, the
+# viewer's server for the browser tests). Then the libFuzzer harnesses replay their corpus and run
+# for a bounded time. Stage times: docs/testing.md.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 jobs=$(nproc)
@@ -21,18 +23,19 @@ scripts/setup.sh test
 stage "format check"
 git ls-files '*.cpp' '*.hpp' | xargs -r clang-format --dry-run --Werror
 
-stage "release build, warnings as errors"
+stage "release build of the programs (library, pgamesh, pgamesh-serve), warnings as errors"
 cmake --preset release > /dev/null
-cmake --build --preset release -j "$jobs"
-stage "release tests"
-ctest --preset release -j "$jobs"
+cmake --build --preset release -j "$jobs" --target pgamesh_cli pgamesh_serve pgamesh_models
+
+stage "installed package (find_package, the README example, the installed viewer)"
+tests/install/run.sh build/release
 
 if [ -x build/release/pgamesh-serve ]; then
   stage "browser tests (pgamesh serve: API over loopback, the page in headless chromium)"
   PGAMESH_CLI=build/release/pgamesh timeout --kill-after=10 300 node --test tests/viewer/
 fi
 
-stage "AddressSanitizer + UndefinedBehaviorSanitizer build"
+stage "AddressSanitizer + UndefinedBehaviorSanitizer build (library, CLI, tests)"
 cmake --preset sanitize > /dev/null
 cmake --build --preset sanitize -j "$jobs"
 stage "AddressSanitizer + UndefinedBehaviorSanitizer tests"
@@ -42,8 +45,8 @@ if compgen -G "fuzz/fuzz_*.cpp" > /dev/null; then
   stage "libFuzzer harnesses build"
   cmake --preset fuzz > /dev/null
   cmake --build --preset fuzz -j "$jobs"
-  stage "libFuzzer, ${PGAMESH_FUZZ_SECONDS:-30} s per reader"
-  scripts/fuzz.sh "${PGAMESH_FUZZ_SECONDS:-30}"
+  stage "libFuzzer: corpus replay, then ${PGAMESH_FUZZ_SECONDS:-10} s per harness"
+  scripts/fuzz.sh "${PGAMESH_FUZZ_SECONDS:-10}"
 fi
 stage ""
 echo "== all stages: $SECONDS s"
