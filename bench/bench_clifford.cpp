@@ -97,7 +97,8 @@ std::vector<graded::Even<R41>> random_rotors(std::mt19937_64& rng) {
   return out;
 }
 
-// Conformal points X = x + ½x² e∞ + e_o with e∞ = e4 + e5, e_o = ½(e5 − e4) (ERRATA §0.3).
+// Conformal points X = x + ½x² e∞ + e_o with e∞ = e4 + e5, e_o = ½(e5 − e4) (docs/conventions.md
+// §15).
 graded::Vector<R41> conformal_point(double x, double y, double z) {
   const double h = 0.5 * (x * x + y * y + z * z);
   return {{x, y, z, h - 0.5, h + 0.5}};

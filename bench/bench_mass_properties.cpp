@@ -6,12 +6,12 @@
 #include <cstring>
 #include <vector>
 
+#include "mesh/mass/stl_mass_properties.hpp"
+#include "mesh/topology/triangle_topology.hpp"
+#include "mesh/weld/welded_triangles.hpp"
 #include "pgamesh/geometry/body_moments.hpp"
 #include "pgamesh/mesh/mass/mass_properties.hpp"
-#include "pgamesh/mesh/mass/stl_mass_properties.hpp"
 #include "pgamesh/mesh/primitives.hpp"
-#include "pgamesh/mesh/topology/triangle_topology.hpp"
-#include "pgamesh/mesh/weld/welded_triangles.hpp"
 
 using namespace pgamesh;
 

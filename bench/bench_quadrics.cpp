@@ -10,14 +10,13 @@
 #include "pgamesh/models/quadric_convert.hpp"
 
 using namespace pgamesh;
-using quadric::Vec3;
 
 namespace {
 
-std::vector<Vec3> random_points(std::size_t n, unsigned seed) {
+std::vector<Vec3d> random_points(std::size_t n, unsigned seed) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> u(-2, 2);
-  std::vector<Vec3> out(n);
+  std::vector<Vec3d> out(n);
   for (auto& p : out) p = {u(rng), u(rng), u(rng)};
   return out;
 }
@@ -86,7 +85,7 @@ void BM_Fit1e6(benchmark::State& state) {
   std::mt19937 rng(4);
   std::uniform_real_distribution<double> u(0, 1);
   std::normal_distribution<double> noise(0, 1e-3);
-  std::vector<Vec3> pts(n);
+  std::vector<Vec3d> pts(n);
   for (auto& p : pts) {
     const double th = std::acos(2 * u(rng) - 1), ph = 2 * M_PI * u(rng);
     p = {0.5 + 3 * std::sin(th) * std::cos(ph) + noise(rng),
@@ -98,7 +97,7 @@ void BM_Fit1e6(benchmark::State& state) {
 BENCHMARK(BM_Fit1e6)->Arg(1000000)->Unit(benchmark::kMillisecond);
 
 void BM_NinePointsClosedForm(benchmark::State& state) {
-  std::array<Vec3, 9> pts;
+  std::array<Vec3d, 9> pts;
   for (int n = 0; n < 9; ++n)
     pts[static_cast<std::size_t>(n)] = {0.5 + 3 * std::sin(0.3 + 0.31 * n) * std::cos(0.7 * n * n),
                                         -1 + 2 * std::sin(0.3 + 0.31 * n) * std::sin(0.7 * n * n),

@@ -8,12 +8,12 @@
 #include <cstring>
 #include <vector>
 
+#include "mesh/topology/triangle_topology.hpp"
+#include "mesh/weld/welded_triangles.hpp"
 #include "pgamesh/core/bounding_box.hpp"
 #include "pgamesh/mesh/primitives.hpp"
 #include "pgamesh/mesh/topology/topology.hpp"
-#include "pgamesh/mesh/topology/triangle_topology.hpp"
 #include "pgamesh/mesh/weld/weld.hpp"
-#include "pgamesh/mesh/weld/welded_triangles.hpp"
 
 using namespace pgamesh;
 

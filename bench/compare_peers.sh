@@ -8,6 +8,9 @@
 #   FORMATS="stl stl-ascii obj ply ply-bin" REPEAT=3 WORK=/tmp/pgamesh-bench BUILD=build/release CGAL=0|1
 #   PEERS="admesh numpy-stl cgal vtk open3d"   (the peers to run; e.g. PEERS=admesh for 10^7, where
 #                                               the Python peers take minutes per run)
+#   BASELINE=/path/to/older/pgamesh   (another build of pgamesh, timed beside this one in the same
+#                                      rounds: the rows "baseline …"; compare them with the rows of
+#                                      this build — "vs pgamesh" is relative to this build's props)
 #
 # Peers (scripts/setup.sh bench installs them; missing ones are skipped): admesh (STL), a CGAL
 # program (bench/peers/cgal_props.cpp: PMP::volume/area/centroid), VTK vtkMassProperties
@@ -80,6 +83,10 @@ for n in "${sizes[@]}"; do
     cat "$file" > /dev/null  # warm the page cache
     tools=("cat" "pgamesh props --no-topology" "pgamesh props")
     cmds=("cat $file" "$pgamesh props $file --no-topology --json" "$pgamesh props $file --json")
+    if [ -n "${BASELINE:-}" ]; then
+      tools+=("baseline props --no-topology" "baseline props")
+      cmds+=("$BASELINE props $file --no-topology --json" "$BASELINE props $file --json")
+    fi
     case $fmt in stl|stl-ascii)
       [ "$have_admesh" = 1 ] && { tools+=("admesh"); cmds+=("admesh $file"); }
       [ "$have_nstl" = 1 ] && { tools+=("numpy-stl"); cmds+=("/usr/bin/python3 $root/bench/peers/numpy_stl_props.py $file"); } ;;

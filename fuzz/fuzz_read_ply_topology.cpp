@@ -7,8 +7,8 @@
 #include <optional>
 
 #include "fuzz_common.hpp"
+#include "mesh/topology/ply_topology.hpp"
 #include "pgamesh/mesh/mass/mass_properties.hpp"
-#include "pgamesh/mesh/topology/ply_topology.hpp"
 #include "pgamesh/mesh/topology/topology.hpp"
 
 namespace {

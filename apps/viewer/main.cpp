@@ -3,8 +3,10 @@
 // server (server/server.hpp, docs/viewer.md).
 #include <charconv>
 #include <cstdio>
+#include <filesystem>
 #include <string>
 #include <string_view>
+#include <system_error>
 
 #include "serve_help.hpp"
 #include "server.hpp"
@@ -36,13 +38,26 @@ bool parse_port(std::string_view text, int& out) {
   return ec == std::errc() && end == text.data() + text.size() && out >= 0 && out <= 65535;
 }
 
+// A folder of the server's data: `installed` relative to the executable's folder when it exists
+// there (an installed server: <prefix>/bin/pgamesh-serve and <prefix>/share/pgamesh/...), else
+// `source`, the source tree the server was built from (a run from the build tree).
+std::string data_dir(const char* installed, const char* source) {
+  std::error_code ec;
+  const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+  if (!ec) {
+    const std::filesystem::path dir = exe.parent_path() / installed;
+    if (std::filesystem::is_directory(dir, ec)) return dir.lexically_normal().string();
+  }
+  return source;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   using pgamesh::cli::print_serve_help;
   pgamesh::viewer::ServerOptions options;
-  options.web_dir = PGAMESH_VIEWER_WEB_DIR;
-  options.bundled_dir = PGAMESH_VIEWER_MESHES_DIR;
+  options.web_dir = data_dir("../share/pgamesh/web", PGAMESH_VIEWER_WEB_DIR);
+  options.bundled_dir = data_dir("../share/pgamesh/meshes", PGAMESH_VIEWER_MESHES_DIR);
   for (int i = 1; i < argc; ++i) {
     const std::string_view arg = argv[i];
     const bool has_value = i + 1 < argc;

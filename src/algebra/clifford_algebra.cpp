@@ -181,8 +181,8 @@ void Algebra::finish() {
     }
   } else {
     // Isolated null pairs (u_a² = u_b² = 0, u_a·u_b = c, both orthogonal to everything else) get
-    // the exact map u_a = ½(f₋ − f₊), u_b = −c (f₊ + f₋) with f₊ = f_a, f₋ = f_b (ERRATA §0.3 for
-    // c = −1); everything else orthogonal keeps its generator.
+    // the exact map u_a = ½(f₋ − f₊), u_b = −c (f₊ + f₋) with f₊ = f_a, f₋ = f_b
+    // (docs/conventions.md §15 for c = −1); everything else orthogonal keeps its generator.
     std::vector<int> partner(N, -1);
     bool pairs_only = true;
     for (int i = 0; i < n_ && pairs_only; ++i) {
@@ -419,12 +419,12 @@ std::optional<Algebra> make_algebra(std::string_view name) {
   if (name.size() == 4 && name.substr(0, 3) == "pga" && name[3] >= '1' && name[3] <= '6')
     return Algebra::signature(name[3] - '0', 0, 1);
   if (name == "cga3" || name == "cga") {
-    // ERRATA §0.3: basis order eo, e1, e2, e3, e∞ with eo·e∞ = −1.
+    // docs/conventions.md §15: basis order eo, e1, e2, e3, e∞ with eo·e∞ = −1.
     Algebra a = null_pairs({"eo", "e1", "e2", "e3", "ei"}, {{0, 4}}, -1.0, {0, 1, 1, 1, 0});
     a.add_generator_alias("einf", 4);
     return a;
   }
-  if (name == "dpga") {  // ERRATA §0.4: w_i · w_j* = ½ δ_ij
+  if (name == "dpga") {  // docs/conventions.md §16: w_i · w_j* = ½ δ_ij
     return null_pairs({"w0", "w1", "w2", "w3", "w0s", "w1s", "w2s", "w3s"},
                       {{0, 4}, {1, 5}, {2, 6}, {3, 7}}, 0.5, std::vector<double>(8, 0.0));
   }

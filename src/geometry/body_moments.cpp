@@ -3,8 +3,8 @@
 namespace pgamesh {
 
 // The scalings of the header's table: paper Table 1 (V = Σ D / 6, area = Σ ‖F‖ / 2), eq. 5.3 as
-// corrected in ERRATA §0.2 (∫r = Σ D (a + b + c) / 24 with o = 0 here), pyramid reference eq. 24
-// (∫rrᵀ = Σ D (…) / 120) and Cor. 4.1 (gap = ½ ‖Σ F‖).
+// corrected in docs/conventions.md §9 (∫r = Σ D (a + b + c) / 24 with o = 0 here), pyramid
+// reference eq. 24 (∫rrᵀ = Σ D (…) / 120) and Cor. 4.1 (gap = ½ ‖Σ F‖).
 BodyMoments body_moments(const BoundarySums& s) {
   BodyMoments m;
   m.area = s.area2 / 2;
@@ -26,7 +26,8 @@ Mat3 central_second_moment(const BodyMoments& m) {
   return out;
 }
 
-// I = ρ ∫ parallel(r) dV = ρ (tr(M) 1 − M) (pyramid reference eq. 24; I_xy = −∫xy dm, ERRATA §0.2).
+// I = ρ ∫ parallel(r) dV = ρ (tr(M) 1 − M) (pyramid reference eq. 24; I_xy = −∫xy dm,
+// docs/conventions.md §10).
 Mat3 inertia_from_second_moment(const Mat3& second, double density) {
   const double trace = second[0][0] + second[1][1] + second[2][2];
   Mat3 out{};

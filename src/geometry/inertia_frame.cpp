@@ -22,14 +22,14 @@ double component(const Vector& v, int i) {
 }
 
 // The axis whose rotor is exp(−½ φ e_pq) = rotor(φ, axis): e12 ↔ z, e13 = −e31 ↔ −y, e23 ↔ x
-// (ERRATA §0.1: R = cos(θ/2) − sin(θ/2)(a_x e23 + a_y e31 + a_z e12)).
+// (docs/conventions.md §7: R = cos(θ/2) − sin(θ/2)(a_x e23 + a_y e31 + a_z e12)).
 Vec3d pivot_axis(int p, int q) {
   if (p == 0 && q == 1) return {0, 0, 1};
   if (p == 0 && q == 2) return {0, -1, 0};
   return {1, 0, 0};
 }
 
-// eq. 5.7 as corrected (ERRATA §1): I′_i = Σ_j (e_j · (R̃_k e_i R_k)) R_k I_j R̃_k.
+// eq. 5.7 as corrected (docs/conventions.md §11): I′_i = Σ_j (e_j · (R̃_k e_i R_k)) R_k I_j R̃_k.
 std::array<Vector, 3> turn_rows(const std::array<Vector, 3>& rows, const Rotor& rk) {
   std::array<Vector, 3> turned, out{};
   for (int j = 0; j < 3; ++j) turned[j] = pga3::apply(rk, rows[j]);
@@ -70,7 +70,8 @@ JacobiResult rotor_jacobi(const Mat3& m) {
     for (const auto& [p, q] : {std::pair{0, 1}, std::pair{0, 2}, std::pair{1, 2}}) {
       const double apq = component(rows[p], q);
       if (apq == 0) continue;
-      // eqs. 5.8, 5.9 with sgn(0) := +1 (ERRATA §1); t = tan φ is the smaller root, |φ| ≤ π/4.
+      // eqs. 5.8, 5.9 with sgn(0) := +1 (docs/conventions.md §11); t = tan φ is the smaller root,
+      // |φ| ≤ π/4.
       const double tau = (component(rows[q], q) - component(rows[p], p)) / (2 * apq);
       const double t = (tau >= 0 ? 1.0 : -1.0) / (std::abs(tau) + std::sqrt(1 + tau * tau));
       const Rotor rk = pga3::rotor(std::atan(t), pivot_axis(p, q));
@@ -86,7 +87,7 @@ JacobiResult rotor_jacobi(const Mat3& m) {
 
 namespace {
 
-// u_i = R̃ e_i R (ERRATA §1).
+// u_i = R̃ e_i R (docs/conventions.md §11).
 Vec3d eigenvector(const Rotor& r, int i) {
   return pga3::apply(pga3::reverse(r), basis_vector(i)).normal();
 }

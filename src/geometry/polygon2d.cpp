@@ -26,7 +26,7 @@ PolygonMeasures polygon_measures(std::span<const std::vector<Vec2>> rings) {
                   std::numeric_limits<double>::quiet_NaN()};
     return m;
   }
-  // Reference point: the bounding-box centre (ERRATA §6).
+  // Reference point: the bounding-box centre (docs/conventions.md §13).
   Vec2 lo = vertices[0], hi = vertices[0];
   for (const auto& v : vertices)
     for (std::size_t i = 0; i < 2; ++i) {

@@ -7,10 +7,10 @@
 #include "detail/memory/huge_pages.hpp"
 #include "detail/memory/page_release.hpp"
 #include "io/readers.hpp"
+#include "io/stl_binary.hpp"
 #include "io/text_cursor.hpp"
 #include "pgamesh/core/input_error.hpp"
 #include "pgamesh/io/mapped_file.hpp"
-#include "pgamesh/io/stl_binary.hpp"
 
 namespace pgamesh {
 
@@ -96,22 +96,6 @@ MeshFormat detect_format(std::span<const char> bytes) {
   if (text && detail::same_word(w, "solid")) return MeshFormat::stl_ascii;
   if (text && is_obj_keyword(w)) return MeshFormat::obj;
   if (!text) return MeshFormat::stl_binary;  // its reader explains the size mismatch
-  return MeshFormat::unknown;
-}
-
-MeshFormat format_from_name(std::string_view name) {
-  std::string n(name);
-  for (char& ch : n)
-    if (ch >= 'A' && ch <= 'Z') ch = static_cast<char>(ch - 'A' + 'a');
-  if (n == "stl" || n == "stl-binary" || n == "stl_binary") return MeshFormat::stl_binary;
-  if (n == "stl-ascii" || n == "stl_ascii") return MeshFormat::stl_ascii;
-  if (n == "obj") return MeshFormat::obj;
-  if (n == "ply" || n == "ply-ascii" || n == "ply_ascii") return MeshFormat::ply_ascii;
-  if (n == "ply-binary-little-endian" || n == "ply-le" || n == "ply_binary_le")
-    return MeshFormat::ply_binary_le;
-  if (n == "ply-binary-big-endian" || n == "ply-be" || n == "ply_binary_be")
-    return MeshFormat::ply_binary_be;
-  if (n == "off") return MeshFormat::off;
   return MeshFormat::unknown;
 }
 

@@ -11,7 +11,7 @@
 #include <cstdint>
 #include <string>
 
-#include "pgamesh/io/stl_binary.hpp"
+#include "io/stl_binary.hpp"
 
 namespace pgamesh::detail {
 

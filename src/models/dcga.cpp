@@ -72,14 +72,14 @@ const clifford::Algebra& algebra() {
   return a;
 }
 
-Multivector cga_point(const Vec3& p, int copy) {
+Multivector cga_point(const Vec3d& p, int copy) {
   if (copy != 1 && copy != 2) throw ModelError("dcga::cga_point: copy must be 1 or 2");
   const int o = copy == 1 ? eo1 : eo2, x = copy == 1 ? e1 : e4, inf = copy == 1 ? ei1 : ei2;
   const double r2 = p[0] * p[0] + p[1] * p[1] + p[2] * p[2];
   return g(o) + g(x, p[0]) + g(x + 1, p[1]) + g(x + 2, p[2]) + g(inf, 0.5 * r2);
 }
 
-Multivector point(const Vec3& p) {
+Multivector point(const Vec3d& p) {
   return clifford::outer(algebra(), cga_point(p, 1), cga_point(p, 2));
 }
 
@@ -112,28 +112,28 @@ Quadric coefficients(const Multivector& q) {
   return out;
 }
 
-double value(const Multivector& q, const Vec3& p) {
+double value(const Multivector& q, const Vec3d& p) {
   return clifford::scalar_product(algebra(), q, point(p));
 }
 
-Vec3 gradient(const Multivector& q, const Vec3& p) {
+Vec3d gradient(const Multivector& q, const Vec3d& p) {
   const Multivector x = point(p);
-  Vec3 n{};
+  Vec3d n{};
   for (int k = 0; k < 3; ++k)
     n[static_cast<std::size_t>(k)] = clifford::scalar_product(
         algebra(), clifford::commutator(algebra(), differential_operator(k), q), x);
   return n;
 }
 
-Multivector tangent_plane(const Multivector& q, const Vec3& p) {
-  const Vec3 n = gradient(q, p);
+Multivector tangent_plane(const Multivector& q, const Vec3d& p) {
+  const Vec3d n = gradient(q, p);
   const Multivector n1 = g(e1, n[0]) + g(e2, n[1]) + g(e3, n[2]);
   const Multivector n2 = g(e4, n[0]) + g(e5, n[1]) + g(e6, n[2]);
   const double delta = clifford::scalar_product(algebra(), n1, cga_point(p, 1));  // eq. 18
   return clifford::outer(algebra(), n1 + g(ei1, delta), n2 + g(ei2, delta));
 }
 
-Vec3 point_coordinates(const Multivector& x) {
+Vec3d point_coordinates(const Multivector& x) {
   const double w = clifford::scalar_product(algebra(), x, extraction_table()[9]);
   if (!(w != 0) || !std::isfinite(w))
     throw ModelError("dcga::point_coordinates: X·T_1 is zero or not finite (not a finite point)");
@@ -143,7 +143,7 @@ Vec3 point_coordinates(const Multivector& x) {
           clifford::scalar_product(algebra(), extraction_table()[8], xn)};
 }
 
-Multivector translator(const Vec3& t) {
+Multivector translator(const Vec3d& t) {
   const clifford::Algebra& a = algebra();
   const Multivector t1 = g(e1, t[0]) + g(e2, t[1]) + g(e3, t[2]);
   const Multivector t2 = g(e4, t[0]) + g(e5, t[1]) + g(e6, t[2]);
@@ -173,7 +173,7 @@ Quartic from_quadric(const Quadric& q) {
   return s;
 }
 
-double value(const Quartic& s, const Vec3& p) {
+double value(const Quartic& s, const Vec3d& p) {
   const double x = p[0], y = p[1], z = p[2], r2 = x * x + y * y + z * z;
   const std::array<double, 15> m = {x * x, y * y, z * z, x * y,  x * z,  y * z,  x,      y,
                                     z,     1.0,   r2,    x * r2, y * r2, z * r2, r2 * r2};

@@ -49,7 +49,7 @@ Vector w_star(int i) {
   return v;
 }
 
-Vector point(const Vec3& p, double weight) {
+Vector point(const Vec3d& p, double weight) {
   Vector v;
   const double x[4] = {p[0], p[1], p[2], weight};
   for (std::size_t k = 0; k < 4; ++k) {
@@ -59,7 +59,7 @@ Vector point(const Vec3& p, double weight) {
   return v;
 }
 
-Vector dual_point(const Vec3& p, double weight) {
+Vector dual_point(const Vec3d& p, double weight) {
   Vector v;
   const double x[4] = {p[0], p[1], p[2], weight};
   for (std::size_t k = 0; k < 4; ++k) {
@@ -86,11 +86,11 @@ Quadric coefficients(const Bivector& q) {
   return out;
 }
 
-double value(const Bivector& q, const Vec3& p) {
+double value(const Bivector& q, const Vec3d& p) {
   return graded::scalar_product(graded::left_contraction(point(p), q), dual_point(p));
 }
 
-std::array<double, 4> polar_plane(const Bivector& q, const Vec3& p) {
+std::array<double, 4> polar_plane(const Bivector& q, const Vec3d& p) {
   // Q ⌊ p* is a vector; its w_k* coefficient is 2 (Q ⌊ p*)·w_k (w_k·w_k* = ½).
   const auto plane = graded::grade<1>(q | dual_point(p));
   std::array<double, 4> out{};

@@ -23,7 +23,7 @@ double inner(const Vector& x, const Vector& y) {
   return s;
 }
 
-Vector point(const Vec3& p) {
+Vector point(const Vec3d& p) {
   const double x = p[0], y = p[1], z = p[2];
   return Vector{
       {x, y, z, 1, 1, 1, 0, 0, 0, 0.5 * x * x, 0.5 * y * y, 0.5 * z * z, x * y, x * z, y * z}};
@@ -45,7 +45,7 @@ Quadric coefficients(const Vector& s) {
                   -(v[kI + 0] + v[kI + 1] + v[kI + 2])}};
 }
 
-double value(const Vector& s, const Vec3& p) {
+double value(const Vector& s, const Vec3d& p) {
   // inner(point(p), q*) written out: 12 products (the QCGA point test).
   const double x = p[0], y = p[1], z = p[2];
   const auto& v = s.v;
@@ -54,7 +54,7 @@ double value(const Vector& s, const Vec3& p) {
           x * y * v[kO + 3] + x * z * v[kO + 4] + y * z * v[kO + 5]);
 }
 
-Vec3 normal(const Vector& s, const Vec3& p) {
+Vec3d normal(const Vector& s, const Vec3d& p) {
   // eq. 45: n_1 = ((x·e1) einf1 + (x·e2) einf4 + (x·e3) einf5 + e1)·q*, and alike.
   const auto& v = s.v;
   const double x = p[0], y = p[1], z = p[2];
@@ -63,8 +63,8 @@ Vec3 normal(const Vector& s, const Vec3& p) {
           -(z * v[kO + 2] + x * v[kO + 4] + y * v[kO + 5]) + v[2]};
 }
 
-Vector tangent_plane(const Vector& s, const Vec3& p) {
-  const Vec3 n = normal(s, p);
+Vector tangent_plane(const Vector& s, const Vec3d& p) {
+  const Vec3d n = normal(s, p);
   const double d = (n[0] * p[0] + n[1] * p[1] + n[2] * p[2]) / 3;
   Vector out;
   out.v[0] = n[0];
@@ -74,18 +74,18 @@ Vector tangent_plane(const Vector& s, const Vec3& p) {
   return out;
 }
 
-Vec3 point_coordinates(const Vector& x) {
+Vec3d point_coordinates(const Vector& x) {
   const double w = -(x.v[kO + 0] + x.v[kO + 1] + x.v[kO + 2]) / 3;  // x·e∞
   if (!(w != 0) || !std::isfinite(w))
     throw ModelError("qcga::point_coordinates: x·e∞ is zero or not finite (not a finite point)");
   return {-x.v[0] / w, -x.v[1] / w, -x.v[2] / w};
 }
 
-quadric::LineIntersection intersect_line(const Vector& s, const Vec3& o, const Vec3& d) {
+quadric::LineIntersection intersect_line(const Vector& s, const Vec3d& o, const Vec3d& d) {
   return quadric::intersect_line(coefficients(s), o, d);
 }
 
-Vector quadric_from_points(std::span<const Vec3, 9> pts) {
+Vector quadric_from_points(std::span<const Vec3d, 9> pts) {
   return dual_quadric(quadric::through_nine_points(pts));
 }
 
@@ -109,9 +109,9 @@ Vector from_clifford(const clifford::Multivector& x) {
   return out;
 }
 
-clifford::Multivector quadric_from_points_ga(std::span<const Vec3, 9> pts) {
+clifford::Multivector quadric_from_points_ga(std::span<const Vec3d, 9> pts) {
   const clifford::Algebra& a = algebra();
-  for (const Vec3& p : pts)
+  for (const Vec3d& p : pts)
     if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
       throw ModelError("qcga::quadric_from_points_ga: a point coordinate is NaN or infinite");
   clifford::Multivector x = to_clifford(point(pts[0]));

@@ -75,7 +75,7 @@ Classification classify(const Quadric& q, double tol) {
     if (std::abs(l) > tol * max4) ++out.rank4;
 
   // Reduced form in M3's eigenframe: Σ λ_k y_k² + l_k y_k + j.
-  const Vec3 lin{q.k[6], q.k[7], q.k[8]};
+  const Vec3d lin{q.k[6], q.k[7], q.k[8]};
   const double lin_norm = std::hypot(lin[0], lin[1], lin[2]);
   double j_red = q.k[9], j_terms = std::abs(q.k[9]), lin_res2 = 0;
   int npos = 0, nneg = 0;

@@ -10,18 +10,18 @@ namespace pgamesh::quadric {
 
 namespace {
 
-bool finite3(const Vec3& v) {
+bool finite3(const Vec3d& v) {
   return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]);
 }
 
 }  // namespace
 
-std::array<double, 10> monomials(const Vec3& p) {
+std::array<double, 10> monomials(const Vec3d& p) {
   const double x = p[0], y = p[1], z = p[2];
   return {x * x, y * y, z * z, x * y, x * z, y * z, x, y, z, 1.0};
 }
 
-double value(const Quadric& q, const Vec3& p) {
+double value(const Quadric& q, const Vec3d& p) {
   const double x = p[0], y = p[1], z = p[2];
   const auto& k = q.k;
   // Horner-like grouping: x(a x + d y + e z + g) + y(b y + f z + h) + z(c z + i) + j.
@@ -29,23 +29,23 @@ double value(const Quadric& q, const Vec3& p) {
          z * (k[2] * z + k[8]) + k[9];
 }
 
-Vec3 gradient(const Quadric& q, const Vec3& p) {
+Vec3d gradient(const Quadric& q, const Vec3d& p) {
   const double x = p[0], y = p[1], z = p[2];
   const auto& k = q.k;
   return {2 * k[0] * x + k[3] * y + k[4] * z + k[6], 2 * k[1] * y + k[3] * x + k[5] * z + k[7],
           2 * k[2] * z + k[4] * x + k[5] * y + k[8]};
 }
 
-Vec3 unit_normal(const Quadric& q, const Vec3& p) {
-  const Vec3 n = gradient(q, p);
+Vec3d unit_normal(const Quadric& q, const Vec3d& p) {
+  const Vec3d n = gradient(q, p);
   const double len = std::hypot(n[0], n[1], n[2]);
   if (!(len > 0) || !std::isfinite(len))
     throw ModelError("quadric::unit_normal: the gradient is zero or not finite at this point");
   return {n[0] / len, n[1] / len, n[2] / len};
 }
 
-std::array<double, 4> tangent_plane(const Quadric& q, const Vec3& p) {
-  const Vec3 n = gradient(q, p);
+std::array<double, 4> tangent_plane(const Quadric& q, const Vec3d& p) {
+  const Vec3d n = gradient(q, p);
   return {n[0], n[1], n[2], -(n[0] * p[0] + n[1] * p[1] + n[2] * p[2])};
 }
 
@@ -91,7 +91,7 @@ void check_finite(const Quadric& q) {
     if (!std::isfinite(c)) throw ModelError("quadric: a coefficient is NaN or infinite");
 }
 
-Quadric ellipsoid(const Vec3& c, const Vec3& r) {
+Quadric ellipsoid(const Vec3d& c, const Vec3d& r) {
   Quadric q;
   q.k[9] = -1;
   for (int n = 0; n < 3; ++n) {
@@ -105,7 +105,7 @@ Quadric ellipsoid(const Vec3& c, const Vec3& r) {
   return q;
 }
 
-Quadric sphere(const Vec3& c, double radius) {
+Quadric sphere(const Vec3d& c, double radius) {
   return ellipsoid(c, {radius, radius, radius});
 }
 
@@ -125,7 +125,7 @@ std::string_view to_string(LineKind kind) {
   return "none";
 }
 
-LineIntersection intersect_line(const Quadric& q, const Vec3& o, const Vec3& d, double tol) {
+LineIntersection intersect_line(const Quadric& q, const Vec3d& o, const Vec3d& d, double tol) {
   if (!finite3(o) || !finite3(d))
     throw ModelError("quadric::intersect_line: origin or direction is not finite");
   if (d[0] == 0 && d[1] == 0 && d[2] == 0)
@@ -133,7 +133,7 @@ LineIntersection intersect_line(const Quadric& q, const Vec3& o, const Vec3& d, 
   const auto& k = q.k;
   const double qa = k[0] * d[0] * d[0] + k[1] * d[1] * d[1] + k[2] * d[2] * d[2] +
                     k[3] * d[0] * d[1] + k[4] * d[0] * d[2] + k[5] * d[1] * d[2];
-  const Vec3 g = gradient(q, o);
+  const Vec3d g = gradient(q, o);
   const double qb = g[0] * d[0] + g[1] * d[1] + g[2] * d[2];
   const double qc = value(q, o);
   LineIntersection out;
@@ -179,7 +179,7 @@ LineIntersection intersect_line(const Quadric& q, const Vec3& o, const Vec3& d, 
   return out;
 }
 
-Quadric substitute(const Quadric& q, const Mat3& a, const Vec3& b) {
+Quadric substitute(const Quadric& q, const Mat3& a, const Vec3d& b) {
   const Mat4 m = matrix4(q);
   Mat4 h{};
   for (int r = 0; r < 3; ++r) {
@@ -197,7 +197,7 @@ Quadric substitute(const Quadric& q, const Mat3& a, const Vec3& b) {
   return from_matrix4(out);
 }
 
-Quadric translate(const Quadric& q, const Vec3& t) {
+Quadric translate(const Quadric& q, const Vec3d& t) {
   return substitute(q, {{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}, {-t[0], -t[1], -t[2]});
 }
 
@@ -220,7 +220,7 @@ Mat3 plane_rotation(int i, int j, double theta) {
   return r;
 }
 
-Mat3 axis_rotation(const Vec3& axis, double theta) {
+Mat3 axis_rotation(const Vec3d& axis, double theta) {
   const double len = std::hypot(axis[0], axis[1], axis[2]);
   if (!(len > 0) || !std::isfinite(len))
     throw ModelError("quadric::axis_rotation: the axis is zero or not finite");

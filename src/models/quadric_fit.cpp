@@ -14,13 +14,13 @@ namespace {
 
 // Centroid m and scale s with mean |p − m|² = 3 s² (unit RMS per coordinate after scaling).
 struct Frame {
-  Vec3 m{};
+  Vec3d m{};
   double s = 1;
 };
 
-Frame normalizing_frame(std::span<const Vec3> pts, const char* who) {
+Frame normalizing_frame(std::span<const Vec3d> pts, const char* who) {
   Frame f;
-  for (const Vec3& p : pts) {
+  for (const Vec3d& p : pts) {
     if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
       throw ModelError(std::string(who) + ": a point coordinate is NaN or infinite");
     for (int k = 0; k < 3; ++k) f.m[k] += p[k];
@@ -28,14 +28,14 @@ Frame normalizing_frame(std::span<const Vec3> pts, const char* who) {
   const double n = static_cast<double>(pts.size());
   for (int k = 0; k < 3; ++k) f.m[k] /= n;
   double s2 = 0;
-  for (const Vec3& p : pts)
+  for (const Vec3d& p : pts)
     for (int k = 0; k < 3; ++k) s2 += (p[k] - f.m[k]) * (p[k] - f.m[k]);
   f.s = std::sqrt(s2 / (3 * n));
   if (!(f.s > 0)) throw ModelError(std::string(who) + ": the points coincide");
   return f;
 }
 
-Vec3 to_frame(const Frame& f, const Vec3& p) {
+Vec3d to_frame(const Frame& f, const Vec3d& p) {
   return {(p[0] - f.m[0]) / f.s, (p[1] - f.m[1]) / f.s, (p[2] - f.m[2]) / f.s};
 }
 
@@ -48,14 +48,14 @@ Quadric from_frame(const Frame& f, const Quadric& g) {
 
 }  // namespace
 
-Residuals residuals(const Quadric& q_in, std::span<const Vec3> pts) {
+Residuals residuals(const Quadric& q_in, std::span<const Vec3d> pts) {
   const Quadric q = normalized(q_in);
   Residuals r;
   if (pts.empty()) return r;
   double sa = 0, sg = 0;
-  for (const Vec3& p : pts) {
+  for (const Vec3d& p : pts) {
     const double v = std::abs(value(q, p));
-    const Vec3 g = gradient(q, p);
+    const Vec3d g = gradient(q, p);
     const double gl = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
     const double d = v == 0 ? 0.0 : (gl > 0 ? v / gl : std::numeric_limits<double>::infinity());
     sa += v * v;
@@ -69,13 +69,13 @@ Residuals residuals(const Quadric& q_in, std::span<const Vec3> pts) {
   return r;
 }
 
-FitResult fit(std::span<const Vec3> pts) {
+FitResult fit(std::span<const Vec3d> pts) {
   if (pts.size() < 9)
     throw ModelError("quadric::fit: needs at least 9 points, got " + std::to_string(pts.size()));
   const Frame f = normalizing_frame(pts, "quadric::fit");
   // Scatter matrix Σ v vᵀ of the monomials in frame coordinates (upper triangle, 55 sums).
   std::array<double, 55> acc{};
-  for (const Vec3& p : pts) {
+  for (const Vec3d& p : pts) {
     const std::array<double, 10> v = monomials(to_frame(f, p));
     std::size_t n = 0;
     for (std::size_t r = 0; r < 10; ++r)
@@ -107,10 +107,10 @@ FitResult fit(std::span<const Vec3> pts) {
   for (double c : global.k) norm2 += c * c;
   const double nrm = std::sqrt(norm2);
   double sa = 0, sg = 0;
-  for (const Vec3& p : pts) {
-    const Vec3 u = to_frame(f, p);
+  for (const Vec3d& p : pts) {
+    const Vec3d u = to_frame(f, p);
     const double v = std::abs(value(g, u));
-    const Vec3 gr = gradient(g, u);
+    const Vec3d gr = gradient(g, u);
     const double gl = std::sqrt(gr[0] * gr[0] + gr[1] * gr[1] + gr[2] * gr[2]);
     const double a = v / nrm;
     const double d =
@@ -126,7 +126,7 @@ FitResult fit(std::span<const Vec3> pts) {
   return out;
 }
 
-Quadric through_nine_points(std::span<const Vec3, 9> pts) {
+Quadric through_nine_points(std::span<const Vec3d, 9> pts) {
   const Frame f = normalizing_frame(pts, "quadric::through_nine_points");
   double m[9][10];
   for (std::size_t r = 0; r < 9; ++r) {

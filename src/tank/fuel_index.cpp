@@ -134,8 +134,9 @@ FuelState FuelIndex::query(const FuelPlane& plane) const {
   }
   if (whole.empty() && side == Side::fuel) {
     // Only split pieces: sum them about o′ on the plane like the reference pass (eq. 4.13), which
-    // keeps every digit of a small fuel region (ERRATA §6).
-    // o′ near the fuel-side vertices of the open leaves (ERRATA §6), as in fuel_naive.
+    // keeps every digit of a small fuel region (docs/conventions.md §13).
+    // o′ near the fuel-side vertices of the open leaves (docs/conventions.md §13), as in
+    // fuel_naive.
     Box3 kept;
     const pga3::Plane<double> p = plane.plane();
     for (std::uint32_t id : open)

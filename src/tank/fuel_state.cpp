@@ -39,8 +39,8 @@ FuelState fuel_state(const Tank& tank, const FuelPlane& plane, const SliceContex
 
 FuelState fuel_naive(const Tank& tank, const FuelPlane& plane) {
   // The vertices' heights p ∨ v and the box of those in the fuel: o′ is the projection of its
-  // centre, so that the pieces are summed about a point near them (ERRATA §6) — about the tank's
-  // centre the fan from o′ over a small fill would cancel terms of the tank's size.
+  // centre, so that the pieces are summed about a point near them (docs/conventions.md §13) — about
+  // the tank's centre the fan from o′ over a small fill would cancel terms of the tank's size.
   const pga3::Plane<double> p = plane.plane();
   std::vector<double> d(tank.vertices.size());
   Box3 kept;

@@ -130,7 +130,7 @@ std::vector<FuelState> fuel_sweep(const Tank& tank, Vec3d up_in, std::span<const
     if (k < first_whole || level <= lowest) {
       // Only pieces (or faces lying in the lowest plane): sum them about o′ on the plane near the
       // fuel-side vertices like the reference pass (eq. 4.13), which keeps every digit of a small
-      // fuel region (ERRATA §6).
+      // fuel region (docs/conventions.md §13).
       std::erase_if(crossing, [&](const Crossing& c) { return c.whole_from <= k; });
       if (!kept_box.empty()) ctx.frame = surface_frame(plane, kept_box.centre());
       ctx.reference = ctx.frame.origin;

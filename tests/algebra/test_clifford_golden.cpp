@@ -17,7 +17,7 @@ Algebra pga3() {
 }
 
 Multivector pga_point(const Algebra& alg, const json& p) {
-  // ERRATA §0.1: (x,y,z) ↦ (e0 + x e1 + y e2 + z e3)*.
+  // docs/conventions.md §2: (x,y,z) ↦ (e0 + x e1 + y e2 + z e3)*.
   Multivector v = basis_blade(1);
   for (int i = 0; i < 3; ++i) v = v + basis_blade(BladeMask{2} << i, p[i].get<double>());
   return dual(alg, v);
@@ -127,7 +127,7 @@ TEST(CliffordGolden, Pga3ThreePlanes) {
 }
 
 namespace {
-// Conformal point X = x + ½ x² e∞ + e_o (ERRATA §0.3), built in the null basis.
+// Conformal point X = x + ½ x² e∞ + e_o (docs/conventions.md §15), built in the null basis.
 Multivector cga_point(const Algebra& alg, const json& p) {
   double x2 = 0;
   Multivector x = basis_blade(alg.parse_blade("eo")->first);
@@ -176,7 +176,8 @@ TEST(CliffordGolden, CgaOuterProductsOfPoints) {
 TEST(CliffordGolden, CgaMetricOfNullBasis) {
   const Algebra alg = *make_algebra("cga3");
   const Multivector eo = basis_blade(1), ei = basis_blade(16);
-  EXPECT_EQ(scalar_product(alg, eo, ei), -1.0);  // ERRATA §0.3, exact through the change of basis
+  // docs/conventions.md §15; exact through the change of basis.
+  EXPECT_EQ(scalar_product(alg, eo, ei), -1.0);
   EXPECT_EQ(scalar_product(alg, eo, eo), 0.0);
   EXPECT_EQ(scalar_product(alg, ei, ei), 0.0);
   // N = e∞ ∧ e_o squares to +1; e_o e∞ = −1 + e_o ∧ e∞.

@@ -317,7 +317,8 @@ TEST(CliffordIdentities, ExpSeriesForNonSimpleBivectors) {
 }
 
 TEST(CliffordIdentities, Pga3MotorExpLogRoundTrip) {
-  // Screw motors: log(exp(L)) = L for non-simple L; the motor moves a point as ERRATA §0.1 says.
+  // Screw motors: log(exp(L)) = L for non-simple L; the motor moves a point as docs/conventions.md
+  // §7 says.
   const Algebra alg = *make_algebra("pga3");
   std::mt19937_64 rng(19);
   for (int trial = 0; trial < 20; ++trial) {
@@ -329,7 +330,7 @@ TEST(CliffordIdentities, Pga3MotorExpLogRoundTrip) {
       EXPECT_TRUE(mv_near(log(alg, m), l, 1e-10));
     }
   }
-  // T = 1 − ½ (t_x e01 + t_y e02 + t_z e03) translates the origin to t (ERRATA §0.1).
+  // T = 1 − ½ (t_x e01 + t_y e02 + t_z e03) translates the origin to t (docs/conventions.md §7).
   const Multivector t = scalar(1.0) - 0.5 * (basis_blade(0b0011, 1.0) + basis_blade(0b0101, 2.0) +
                                              basis_blade(0b1001, 3.0));
   const Multivector o = basis_blade(0b1110);

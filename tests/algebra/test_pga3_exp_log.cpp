@@ -54,7 +54,7 @@ TYPED_TEST(Pga3ExpLog, ExpMatchesRotorAndTranslator) {
     const Vec3<T> axis = random_line<T>(r).direction(), t = random_line<T>(r).moment();
     const T angle = Num<T>::random(r) * T(6);
     const Vec3<T> a = axis / length(axis);
-    // rotor(θ, a) = exp(−θ/2 (a_x e23 + a_y e31 + a_z e12)) (ERRATA §0.1).
+    // rotor(θ, a) = exp(−θ/2 (a_x e23 + a_y e31 + a_z e12)) (docs/conventions.md §7).
     EXPECT_TRUE(motor_near(exp(line_from_plucker((-angle / 2) * a, Vec3<T>{})), rotor(angle, axis),
                            tol<T>()));
     // translator(t) = exp(−½ t·(e01, e02, e03)).

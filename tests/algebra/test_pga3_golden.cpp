@@ -1,4 +1,4 @@
-// Every R(3,0,1) case of golden/pga_basics.json (ERRATA §0.1 conventions): the dual table, point
+// Every R(3,0,1) case of golden/pga_basics.json (docs/conventions.md §1–§7): the dual table, point
 // embedding, joins and meets with the grade types and with the general Multivector, the general
 // products and involutions, norms, and the 3-D polygon area from boundary edges.
 #include <gtest/gtest.h>
@@ -77,7 +77,7 @@ TEST(Pga3Golden, DualTable) {
     EXPECT_TRUE(near_mv(undual(b), row["undual"], exact)) << row["blade"];
     EXPECT_EQ(undual(dual(b)), b);
   }
-  // The grade types' dual/undual agree with the table (ERRATA §0.1).
+  // The grade types' dual/undual agree with the table (docs/conventions.md §3).
   for (int i = 0; i < 16; ++i) {
     const MV b = basis_blade<double>(i);
     const int g = detail::blade_grade(i);
@@ -203,13 +203,13 @@ TEST(Pga3Golden, GeneralProductsAndInvolutions) {
     EXPECT_TRUE(near_mv(undual(x), e["undual_X"], t));
     EXPECT_TRUE(near_scalar(norm(x), e["norm_X"], t));
     EXPECT_TRUE(near_scalar(ideal_norm(x), e["ideal_norm_X"], t));
-    // ‖A‖∞ = ‖A ∨ o‖ = ‖A*‖ (ERRATA §0.1); the sum of squares, not a grade-wise norm.
+    // ‖A‖∞ = ‖A ∨ o‖ = ‖A*‖ (docs/conventions.md §6); the sum of squares, not a grade-wise norm.
     EXPECT_TRUE(near_scalar(norm(dual(x)), e["ideal_norm_X"], t));
   }
 }
 
 // Area of a planar polygon in 3-D from its boundary edges: ½‖Σ E_i‖∞ = ½‖Σ (E_i ∨ o)‖
-// (paper Table 1, corrected for 3-D in ERRATA §1).
+// (paper Table 1, corrected for 3-D in docs/conventions.md §6).
 TEST(Pga3Golden, PolygonAreaFromEdges) {
   const json& c = find_case("polygon3d_pentagon");
   const Tolerance t = pgamesh::test::tolerance_of(golden(), c);

@@ -116,7 +116,7 @@ TYPED_TEST(Pga3Identities, NormsOfJoinsAreMagnitudes) {
     // Table 4: the ideal norms are the magnitudes of the extensions to the origin.
     EXPECT_NEAR(ideal_norm(pa & pb), 2 * heron(o, a, b), 16 * tol<T>());
     EXPECT_NEAR(ideal_norm(pa & pb & pc), std::abs(dot(a, cross(b, c))), 64 * tol<T>());
-    // o ∨ F = +det(a, b, c) (ERRATA §0.1: o on the left gives +6V).
+    // o ∨ F = +det(a, b, c) (docs/conventions.md §5: o on the left gives +6V).
     EXPECT_NEAR(origin<T>() & (pa & pb & pc), dot(a, cross(b, c)), 64 * tol<T>());
     // The same with the general Multivector.
     EXPECT_NEAR(norm(to_multivector(pa) & to_multivector(pb) & to_multivector(pc)),

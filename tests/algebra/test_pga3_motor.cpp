@@ -71,13 +71,13 @@ TYPED_TEST(Pga3Motor, RotorMatchesRodrigues) {
 }
 
 TEST(Pga3MotorFixed, QuarterTurnAboutZ) {
-  // +90° about z takes x to y (right-handed, ERRATA §0.1).
+  // +90° about z takes x to y (right-handed, docs/conventions.md §7).
   const auto r = rotor(M_PI / 2, Vec3d{0, 0, 1});
   const Vec3d p = apply(r, point(1.0, 0.0, 0.0)).euclidean();
   EXPECT_NEAR(p.x, 0.0, 1e-15);
   EXPECT_NEAR(p.y, 1.0, 1e-15);
   EXPECT_NEAR(p.z, 0.0, 1e-15);
-  // Coefficients as printed in ERRATA §0.1: cos(θ/2) − sin(θ/2) e12.
+  // Coefficients as in docs/conventions.md §7: cos(θ/2) − sin(θ/2) e12.
   EXPECT_DOUBLE_EQ(r.s, std::cos(M_PI / 4));
   EXPECT_DOUBLE_EQ(r.e12, -std::sin(M_PI / 4));
   EXPECT_EQ(r.e23, 0.0);
@@ -90,7 +90,7 @@ TEST(Pga3MotorFixed, TranslatorCoefficientsAndOrigin) {
   EXPECT_EQ(t.e01, -1.0);
   EXPECT_EQ(t.e02, 2.0);
   EXPECT_EQ(t.e03, -3.0);
-  // T o T̃ = point(t) (ERRATA §0.1).
+  // T o T̃ = point(t) (docs/conventions.md §7).
   const auto p = apply(t, origin<double>());
   EXPECT_EQ(p.e123, 1.0);
   EXPECT_EQ(p.euclidean(), (Vec3d{2, -4, 6}));

@@ -181,7 +181,8 @@ TEST(Pga3ProductsFixed, GradeSelectionAndSplit) {
 }
 
 TEST(Pga3ProductsFixed, BladeTableSigns) {
-  // The project's blade names (ERRATA §0.1): e31 = e3 e1, e021 = e0 e2 e1, e032 = e0 e3 e2.
+  // The project's blade names (docs/conventions.md §1): e31 = e3 e1, e021 = e0 e2 e1,
+  // e032 = e0 e3 e2.
   const auto e = [](int i) { return basis_blade<double>(i); };
   EXPECT_EQ(e(kE3) * e(kE1), e(kE31));
   EXPECT_EQ(e(kE1) * e(kE3), -e(kE31));

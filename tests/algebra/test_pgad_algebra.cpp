@@ -1,6 +1,6 @@
 // PGA R(d,0,1) for compile-time d: agreement with the general engine for every d = 1…6, with the
 // PGA3 fast path (joins, motors) for d = 3, the golden R(3,0,1) joins, and the embedding identities
-// o ∨ v1 ∨ … ∨ vd = det[v1 … vd], S ∨ o = (−1)^d o ∨ S (ERRATA §0.1).
+// o ∨ v1 ∨ … ∨ vd = det[v1 … vd], S ∨ o = (−1)^d o ∨ S (docs/conventions.md §5).
 #include <gtest/gtest.h>
 
 #include <random>
@@ -116,7 +116,7 @@ void check_embedding_identities() {
     for (int i = 0; i < D; ++i)
       EXPECT_NEAR(pgad::position(px)[static_cast<std::size_t>(i)], x[static_cast<std::size_t>(i)],
                   1e-15);
-    // a translator 1 − ½ t e0 moves a point by t (ERRATA §0.1 motor convention in any d)
+    // a translator 1 − ½ t e0 moves a point by t (docs/conventions.md §7 motor convention in any d)
     const auto t = random_vec<D>(rng);
     pgad::Multivector<D> tr = pgad::scalar<D>(1.0);
     for (int i = 0; i < D; ++i) tr[1u | (2u << i)] = -0.5 * t[static_cast<std::size_t>(i)];  // e0i

@@ -1,5 +1,5 @@
-// `pgamesh check`: the JSON of DESIGN.md §5 on golden meshes, the exit codes, and the repaired mesh
-// written by --fix-orientation --output.
+// `pgamesh check`: the JSON of docs/topology.md on golden meshes, the exit codes, and the repaired
+// mesh written by --fix-orientation --output.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,5 +1,5 @@
 // Boundary sums against closed forms: an axis-aligned box and a tetrahedron (pyramid reference
-// worked example, with ERRATA §3's corrected figures).
+// worked example, with the corrected figures of docs/conventions.md §17).
 #include <gtest/gtest.h>
 
 #include "pgamesh/geometry/body_moments.hpp"
@@ -63,8 +63,9 @@ TEST(BodyMoments, OpenBoxGapIsMissingFaceArea) {
 }
 
 TEST(BodyMoments, PyramidReferenceExample) {
-  // Pyramid reference §3 (eqs. 26–35) with ERRATA §3's corrected figures: the wedge (o, A, B, C),
-  // density 10⁻⁵, V = 4000/3, c = (10, 6.25, 2), inertia about the origin and about c.
+  // Pyramid reference §3 (eqs. 26–35) corrected as in docs/conventions.md §17: the wedge
+  // (o, A, B, C), density 10⁻⁵, V = 4000/3, c = (10, 6.25, 2), inertia about the origin and
+  // about c.
   const Vec3d A{40, 0, 0}, B{0, 25, 0}, C{0, 0, 8};
   BoundarySums s;
   add_triangle(s, A, B, C);

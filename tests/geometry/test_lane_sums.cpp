@@ -11,10 +11,10 @@
 #include <random>
 #include <vector>
 
-#include "pgamesh/algebra/double4.hpp"
+#include "detail/simd/double4.hpp"
+#include "geometry/chunked_sums.hpp"
+#include "io/stl_binary.hpp"
 #include "pgamesh/geometry/body_moments.hpp"
-#include "pgamesh/geometry/chunked_sums.hpp"
-#include "pgamesh/io/stl_binary.hpp"
 
 namespace pgamesh {
 namespace {

@@ -167,7 +167,7 @@ TEST(Complex3d, GoldenMeshPropertiesAndFastPath) {
       EXPECT_TRUE(
           test::near_scalar(geometry::signed_volume(s), -e["carrier_sum"].value("e0", 0.0) / 6, t))
           << c["id"];
-      // … while the generator (gen/refmass.py mass_props) takes the golden
+      // … while the golden files' generator (docs/conventions.md §18) takes the golden
       // "signed_volume_about_origin" about the FIRST VERTEX (the same as the origin for the cubes)
       const auto s0 = geometry::boundary_sums<3>(chain, m.vertices[0]);
       EXPECT_TRUE(test::near_scalar(geometry::signed_volume(s0),

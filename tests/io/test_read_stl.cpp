@@ -5,8 +5,8 @@
 #include <cmath>
 #include <limits>
 
+#include "io/stl_binary.hpp"
 #include "pgamesh/io/read_mesh.hpp"
-#include "pgamesh/io/stl_binary.hpp"
 #include "support/read_helpers.hpp"
 
 namespace pgamesh {

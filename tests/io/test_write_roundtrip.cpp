@@ -7,8 +7,8 @@
 #include <cmath>
 #include <limits>
 
+#include "io/stl_binary.hpp"
 #include "pgamesh/io/read_mesh.hpp"
-#include "pgamesh/io/stl_binary.hpp"
 #include "pgamesh/io/write_mesh.hpp"
 #include "support/read_helpers.hpp"
 #include "support/temp_file.hpp"

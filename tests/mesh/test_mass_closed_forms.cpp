@@ -7,7 +7,7 @@
 #include <numbers>
 #include <random>
 
-#include "pgamesh/geometry/chunked_sums.hpp"
+#include "geometry/chunked_sums.hpp"
 #include "pgamesh/mesh/mass/mass_properties.hpp"
 #include "support/solids.hpp"
 
@@ -202,7 +202,7 @@ TEST(MassClosedForms, TranslationInvariance) {
   const MassProperties p = mass_properties(m);
   for (Vec3d t : {Vec3d{1e6, 0, 0}, Vec3d{0, -1e6, 0}, Vec3d{0, 0, 1e6}, Vec3d{1e6, -2e6, 3e6}}) {
     // Translating rounds the vertices; the properties must move with them, not with the digits
-    // lost by accumulating about a distant origin (ERRATA §6).
+    // lost by accumulating about a distant origin (docs/conventions.md §13).
     const MassProperties q = mass_properties(transformed(m, [&](Vec3d v) { return v + t; }));
     EXPECT_NEAR(q.volume, p.volume, 1e-9 * p.volume);
     EXPECT_NEAR(length(q.center_of_mass - t - p.center_of_mass), 0, 1e-9);

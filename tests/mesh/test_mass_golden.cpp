@@ -53,9 +53,9 @@ TEST(MassGolden, MeshProps) {
     EXPECT_TRUE(near_group({p.carrier_sum.e0, p.carrier_sum.e1, p.carrier_sum.e2, p.carrier_sum.e3},
                            {cs.at("e0"), cs.at("e1"), cs.at("e2"), cs.at("e3")}, tol));
     if (e.contains("signed_volume_about_origin")) {
-      // Open surfaces: the volume depends on the apex o′, (1/6) o′ ∨ Σ F. The generator
-      // (gen/refmass.py mass_props) takes the first vertex as o′, despite the field's name; the
-      // carrier sum about v0 has e0 coefficient e0 + n·v0.
+      // Open surfaces: the volume depends on the apex o′, (1/6) o′ ∨ Σ F. The golden files'
+      // generator (docs/conventions.md §18) takes the first vertex as o′, despite the field's name;
+      // the carrier sum about v0 has e0 coefficient e0 + n·v0.
       const Vec3d v0 = mesh.vertices[0];
       const double e0_about_v0 = p.carrier_sum.e0 + dot(p.carrier_sum.normal(), v0);
       EXPECT_TRUE(

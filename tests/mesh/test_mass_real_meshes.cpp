@@ -56,7 +56,7 @@ void expect_exact([[maybe_unused]] const Loaded& l) {
 }  // namespace
 
 TEST(MassRealMeshes, GearwheelAsciiAndBinaryAgree) {
-  REQUIRE_SHARED_MESHES();
+  REQUIRE_REAL_MESHES("stl-models/gearwheel.ascii.stl", "stl-models/gearwheel.bin.stl");
   const Loaded a = load("stl-models/gearwheel.ascii.stl"), b = load("stl-models/gearwheel.bin.stl");
   EXPECT_EQ(a.props.triangles, 2444u);
   EXPECT_GT(a.props.volume, 0);
@@ -101,7 +101,7 @@ TEST(MassRealMeshes, BinaryPlyUnitCube) {
 }
 
 TEST(MassRealMeshes, InwardMeshesReportNegativeVolume) {
-  REQUIRE_SHARED_MESHES();
+  REQUIRE_REAL_MESHES("geomview/mushroom.off");
   for (const char* name : {"geomview/mushroom.off", "octave-matgeom/dodecahedron.ply"}) {
     SCOPED_TRACE(name);
     const Loaded l = load(name);

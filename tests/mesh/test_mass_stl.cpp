@@ -7,10 +7,10 @@
 #include <cstring>
 #include <limits>
 
+#include "mesh/mass/stl_mass_properties.hpp"
 #include "pgamesh/core/input_error.hpp"
 #include "pgamesh/io/mapped_file.hpp"
 #include "pgamesh/io/read_mesh.hpp"
-#include "pgamesh/mesh/mass/stl_mass_properties.hpp"
 #include "support/golden.hpp"
 #include "support/read_helpers.hpp"
 #include "support/same_topology.hpp"
@@ -97,8 +97,8 @@ TEST(MassStl, FarFromOriginFloat32Warns) {
 }
 
 TEST(MassStl, IrregularTetrahedronHasVolumeOne) {
+  REQUIRE_REAL_MESHES("stl-models/tetrahedronIrregular.bin.stl");
   const std::string dir = shared_meshes_dir();
-  if (dir.empty()) GTEST_SKIP() << "../shared/meshes not found";
   const MappedFile file = MappedFile::open(dir + "/stl-models/tetrahedronIrregular.bin.stl");
   const auto view = binary_stl_view(file.bytes(), "tetrahedronIrregular.bin.stl");
   ASSERT_TRUE(view);

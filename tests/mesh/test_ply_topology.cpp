@@ -14,12 +14,12 @@
 #include <string>
 #include <vector>
 
+#include "mesh/topology/ply_topology.hpp"
+#include "mesh/weld/welded_triangles.hpp"
 #include "pgamesh/io/read_mesh.hpp"
 #include "pgamesh/io/write_mesh.hpp"
 #include "pgamesh/mesh/mass/mass_properties.hpp"
-#include "pgamesh/mesh/topology/ply_topology.hpp"
 #include "pgamesh/mesh/topology/topology.hpp"
-#include "pgamesh/mesh/weld/welded_triangles.hpp"
 #include "support/cli_run.hpp"
 #include "support/file_bytes.hpp"
 #include "support/read_helpers.hpp"

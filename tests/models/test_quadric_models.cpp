@@ -12,7 +12,6 @@
 
 using namespace pgamesh;
 using quadric::Quadric;
-using quadric::Vec3;
 
 namespace {
 
@@ -23,7 +22,7 @@ Quadric random_quadric(std::mt19937& rng) {
   return q;
 }
 
-Vec3 random_point(std::mt19937& rng) {
+Vec3d random_point(std::mt19937& rng) {
   std::uniform_real_distribution<double> u(-3, 3);
   return {u(rng), u(rng), u(rng)};
 }
@@ -39,7 +38,7 @@ TEST(QuadricModels, QcgaClosedFormsAgainstEngine) {
   const auto& alg = qcga::algebra();
   for (int n = 0; n < 20; ++n) {
     const Quadric q = random_quadric(rng);
-    const Vec3 p = random_point(rng), r = random_point(rng);
+    const Vec3d p = random_point(rng), r = random_point(rng);
     const auto qs = qcga::dual_quadric(q);
     const auto x = qcga::point(p);
     const double engine =
@@ -65,7 +64,7 @@ TEST(QuadricModels, QcgaClosedFormsAgainstEngine) {
     // point_coordinates undoes a scaled embedding (eqs. 62, 69).
     qcga::Vector scaled = x;
     for (double& c : scaled.v) c *= -2.5;
-    const Vec3 got = qcga::point_coordinates(scaled);
+    const Vec3d got = qcga::point_coordinates(scaled);
     for (int k = 0; k < 3; ++k) EXPECT_NEAR(got[k], p[k], 1e-13);
   }
 }
@@ -76,13 +75,13 @@ TEST(QuadricModels, QcgaEq70MatchesClosedFormOnRandomEllipsoid) {
                                        {0.3, -0.2, 0.5});
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> u(0, 1);
-  std::array<Vec3, 9> pts;
+  std::array<Vec3d, 9> pts;
   const quadric::Mat3 r = quadric::axis_rotation({1, 2, 3}, 0.4);
   for (auto& p : pts) {
     const double th = std::acos(2 * u(rng) - 1), ph = 2 * M_PI * u(rng);
-    const Vec3 l{2 * std::sin(th) * std::cos(ph), std::sin(th) * std::sin(ph), 0.5 * std::cos(th)};
+    const Vec3d l{2 * std::sin(th) * std::cos(ph), std::sin(th) * std::sin(ph), 0.5 * std::cos(th)};
     for (int k = 0; k < 3; ++k)
-      p[k] = r[k][0] * l[0] + r[k][1] * l[1] + r[k][2] * l[2] + Vec3{0.3, -0.2, 0.5}[k];
+      p[k] = r[k][0] * l[0] + r[k][1] * l[1] + r[k][2] * l[2] + Vec3d{0.3, -0.2, 0.5}[k];
   }
   const Quadric want = quadric::normalized(e);
   const Quadric closed = quadric::normalized(qcga::coefficients(qcga::quadric_from_points(pts)));
@@ -97,7 +96,7 @@ TEST(QuadricModels, DpgaGradedAgainstEngineInNullBasis) {
   const auto& alg = dpga::algebra();
   for (int n = 0; n < 10; ++n) {
     const Quadric q = random_quadric(rng);
-    const Vec3 p = random_point(rng);
+    const Vec3d p = random_point(rng);
     const auto qd = dpga::quadric(q);
     const auto qn = dpga::to_null_basis(qd);
     const auto pn = dpga::to_null_basis(dpga::point(p));
@@ -115,7 +114,7 @@ TEST(QuadricModels, DpgaGradedAgainstEngineInNullBasis) {
     EXPECT_EQ(pm.count("w0*"), 0u);
     // Polar plane (eq. 38) = (∇F, g x + h y + i z + 2j).
     const auto pl = dpga::polar_plane(qd, p);
-    const Vec3 gr = quadric::gradient(q, p);
+    const Vec3d gr = quadric::gradient(q, p);
     for (int k = 0; k < 3; ++k) EXPECT_NEAR(pl[k], gr[k], 1e-12 * (1 + std::abs(gr[k])));
     EXPECT_NEAR(pl[3], q.k[6] * p[0] + q.k[7] * p[1] + q.k[8] * p[2] + 2 * q.k[9], 1e-12 * 10);
   }
@@ -138,12 +137,12 @@ TEST(QuadricModels, DpgaCorrectedRotorAgainstEngineExpAndNotTheShear) {
       const auto r = dpga::rotor(i, j, th);
       const auto rr = graded::project<dpga::Algebra::even_grades>(r * ~r);
       EXPECT_NEAR(graded::scalar_part(rr), 1, 1e-14);
-      const Vec3 p{1, 2, 0.5};
-      const Vec3 want = [&] {
+      const Vec3d p{1, 2, 0.5};
+      const Vec3d want = [&] {
         const auto m = quadric::plane_rotation(i, j, th);
-        return Vec3{m[0][0] * p[0] + m[0][1] * p[1] + m[0][2] * p[2],
-                    m[1][0] * p[0] + m[1][1] * p[1] + m[1][2] * p[2],
-                    m[2][0] * p[0] + m[2][1] * p[1] + m[2][2] * p[2]};
+        return Vec3d{m[0][0] * p[0] + m[0][1] * p[1] + m[0][2] * p[2],
+                     m[1][0] * p[0] + m[1][1] * p[1] + m[1][2] * p[2],
+                     m[2][0] * p[0] + m[2][1] * p[1] + m[2][2] * p[2]};
       }();
       const auto moved = graded::sandwich(r, dpga::point(p));
       const auto moved_star = graded::sandwich(r, dpga::dual_point(p));
@@ -178,7 +177,7 @@ TEST(QuadricModels, SectionEightPipeline) {
   // Breuils §8: nine points -> QCGA (eq. 70) -> DPGA (eq. 71) -> rotate (corrected rotor) -> QCGA
   // (eq. 74): the rotated points lie on the result.
   const Quadric e = quadric::ellipsoid({0.3, -0.2, 0.5}, {2, 1, 0.5});
-  std::array<Vec3, 9> pts;
+  std::array<Vec3d, 9> pts;
   for (int n = 0; n < 9; ++n) {
     const double th = 0.3 + 0.31 * n, ph = 0.7 * n * n + 0.2;
     pts[static_cast<std::size_t>(n)] = {0.3 + 2 * std::sin(th) * std::cos(ph),
@@ -188,8 +187,8 @@ TEST(QuadricModels, SectionEightPipeline) {
   const auto qs = qcga::quadric_from_points(pts);
   const auto qrot = qcga::from_dpga(dpga::rotate(dpga::from_qcga(qs), 0, 2, 0.9));
   const auto m = quadric::plane_rotation(0, 2, 0.9);
-  for (const Vec3& p : pts) {
-    const Vec3 pr{m[0][0] * p[0] + m[0][2] * p[2], p[1], m[2][0] * p[0] + m[2][2] * p[2]};
+  for (const Vec3d& p : pts) {
+    const Vec3d pr{m[0][0] * p[0] + m[0][2] * p[2], p[1], m[2][0] * p[0] + m[2][2] * p[2]};
     EXPECT_NEAR(qcga::value(qrot, pr), 0, 1e-12);
   }
   (void)e;
@@ -199,10 +198,10 @@ TEST(QuadricModels, DcgaTranslationAndRotationMatchDirectTransform) {
   std::mt19937 rng(13);
   for (int n = 0; n < 5; ++n) {
     const Quadric q = random_quadric(rng);
-    const Vec3 t = random_point(rng);
+    const Vec3d t = random_point(rng);
     const auto moved = dcga::transform(dcga::translator(t), dcga::quadric(q));
     expect_quadric_near(dcga::coefficients(moved), quadric::translate(q, t), 1e-11);
-    const Vec3 p = random_point(rng);
+    const Vec3d p = random_point(rng);
     EXPECT_NEAR(dcga::value(moved, {p[0] + t[0], p[1] + t[1], p[2] + t[2]}), quadric::value(q, p),
                 1e-10);
     const auto rot = dcga::transform(dcga::rotor(1, 2, 0.8), dcga::quadric(q));
@@ -216,20 +215,20 @@ TEST(QuadricModels, DcgaTranslationAndRotationMatchDirectTransform) {
 
 TEST(QuadricModels, DcgaPointTangentPlaneAndCoordinates) {
   const Quadric q = quadric::sphere({0.5, -1, 2}, 1.5);
-  const Vec3 p{0.5 + 1.5, -1, 2};
+  const Vec3d p{0.5 + 1.5, -1, 2};
   const auto pi = dcga::tangent_plane(dcga::quadric(q), p);
   // Π·X = −(n·x − n·p)² vanishes at p and grows quadratically off the plane.
   EXPECT_NEAR(clifford::scalar_product(dcga::algebra(), pi, dcga::point(p)), 0, 1e-12);
-  const Vec3 off{p[0] + 0.5, p[1] + 7, p[2] - 3};
+  const Vec3d off{p[0] + 0.5, p[1] + 7, p[2] - 3};
   const double np = quadric::gradient(q, p)[0] * 0.5;
   EXPECT_NEAR(clifford::scalar_product(dcga::algebra(), pi, dcga::point(off)), -np * np, 1e-10);
   const auto x = -3.0 * dcga::point({1.25, -0.5, 4});
-  const Vec3 c = dcga::point_coordinates(x);
+  const Vec3d c = dcga::point_coordinates(x);
   EXPECT_NEAR(c[0], 1.25, 1e-13);
   EXPECT_NEAR(c[1], -0.5, 1e-13);
   EXPECT_NEAR(c[2], 4, 1e-13);
   // T_m·X = m(x) for all 15 monomials of eq. 4.
-  const Vec3 r{0.7, -1.3, 0.4};
+  const Vec3d r{0.7, -1.3, 0.4};
   const double r2 = r[0] * r[0] + r[1] * r[1] + r[2] * r[2];
   const std::array<double, 15> mono = {
       r[0] * r[0], r[1] * r[1], r[2] * r[2], r[0] * r[1], r[0] * r[2], r[1] * r[2], r[0],   r[1],
@@ -253,12 +252,12 @@ TEST(QuadricModels, DcgaQuartics) {
   const auto t = dcga::quartic(s);
   for (double u : {0.0, 0.7, 2.1, 4.0})
     for (double v : {0.0, 1.1, 3.0, 5.5}) {
-      const Vec3 p{(big + small * std::cos(v)) * std::cos(u),
-                   (big + small * std::cos(v)) * std::sin(u), small * std::sin(v)};
+      const Vec3d p{(big + small * std::cos(v)) * std::cos(u),
+                    (big + small * std::cos(v)) * std::sin(u), small * std::sin(v)};
       EXPECT_NEAR(dcga::value(s, p), 0, 1e-12);
       EXPECT_NEAR(dcga::value(t, p), 0, 1e-12);
     }
-  const Vec3 centre{0, 0, 0};  // (R² − ρ²)² at the origin
+  const Vec3d centre{0, 0, 0};  // (R² − ρ²)² at the origin
   EXPECT_NEAR(dcga::value(t, centre), std::pow(big * big - small * small, 2), 1e-12);
   EXPECT_NEAR(dcga::value(t, {1, 2, 3}), dcga::value(s, {1, 2, 3}), 1e-10);
   // A translated torus (DCGA versor) has its surface moved.

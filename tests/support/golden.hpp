@@ -1,4 +1,4 @@
-// Reading ../shared/golden-format JSON (copied into tests/data/golden) and comparing with the
+// Reading the golden JSON of tests/data/golden (docs/conventions.md §18) and comparing with the
 // golden rule: |got − expected| ≤ abs + rel · scale, scale = max |expected| of the group.
 #pragma once
 
@@ -87,10 +87,26 @@ inline std::map<std::string, double> blades(const json& j) {
   return out;
 }
 
-// Directory of ../shared/meshes, or empty when the folder is absent (callers GTEST_SKIP visibly).
+// The folder of real meshes: tests/data/meshes (always there), merged at configure time with
+// ../shared/meshes when that folder exists beside the clone (tests/CMakeLists.txt); empty only
+// when the build has none.
 inline std::string shared_meshes_dir() {
   const std::filesystem::path p(PGAMESH_SHARED_MESHES_DIR);
   return std::filesystem::is_directory(p) ? p.string() : std::string();
 }
 
+// Whether the real mesh `relative` is there: the files under GPL or without a stated licence are
+// not shipped in tests/data/meshes and come only with ../shared/meshes.
+inline bool has_real_mesh(const std::string& relative) {
+  return std::filesystem::exists(std::string(PGAMESH_SHARED_MESHES_DIR) + "/" + relative);
+}
+
 }  // namespace pgamesh::test
+
+// Skips the test, visibly, unless every named real mesh is there (has_real_mesh).
+#define REQUIRE_REAL_MESHES(...)                        \
+  for (const char* required_mesh : {__VA_ARGS__})       \
+    if (!::pgamesh::test::has_real_mesh(required_mesh)) \
+  GTEST_SKIP() << required_mesh << " is not bundled (its licence): it comes with ../shared/meshes"
+
+namespace pgamesh::test {}  // namespace pgamesh::test

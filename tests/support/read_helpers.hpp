@@ -86,7 +86,8 @@ inline std::string shared_mesh(const std::string& relative) {
   const std::string var = ::pgamesh::test::shared_mesh(relative); \
   if (var.empty()) GTEST_SKIP() << "shared mesh " << (relative) << " is absent"
 
-// Six times the signed volume: Σ det(v0, vi, vi+1) over the fan of every face (o ∨ F, ERRATA §0.1).
+// Six times the signed volume: Σ det(v0, vi, vi+1) over the fan of every face (o ∨ F,
+// docs/conventions.md §5).
 inline double six_volume(const Mesh& m) {
   double s = 0;
   for (std::size_t f = 0; f < m.face_count(); ++f) {

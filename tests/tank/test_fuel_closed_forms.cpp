@@ -332,8 +332,9 @@ TEST(FuelClosedForms, ConcaveFacesGiveExactVolumesAndCentres) {
 TEST(FuelClosedForms, TinyFillsOfAFarBoxAgainstTheExactCorner) {
   // A unit box 1e6 from the origin tilted so that the fuel is a corner tetrahedron of legs
   // s/up_i: V = s³ / (6 up_x up_y up_z), with s = level − up·corner. The reference point near the
-  // fuel keeps the fan from cancelling terms of the tank's size (ERRATA §6); what remains is the
-  // rounding of the heights up·x − level of absolute coordinates (ulp(1.7e6) = 2.3e-10 against s).
+  // fuel keeps the fan from cancelling terms of the tank's size (docs/conventions.md §13); what
+  // remains is the rounding of the heights up·x − level of absolute coordinates
+  // (ulp(1.7e6) = 2.3e-10 against s).
   for (const double offset : {0.0, 1e6}) {
     Mesh m = box(1, 1, 1);
     for (auto& v : m.vertices) v = v + Vec3d{offset, -offset, offset};

@@ -1,4 +1,4 @@
-// PGA R(3,0,1), hand-specialised by grade (the hot path). Conventions: ERRATA §0.1 —
+// PGA R(3,0,1), hand-specialised by grade (the hot path). Conventions: docs/conventions.md §1–§7 —
 // basis 1, e0, e1, e2, e3, e01, e02, e03, e12, e31, e23, e021, e013, e032, e123, e0123;
 // e0² = 0, e1² = e2² = e3² = 1; point (x,y,z) = e123 + x e032 + y e013 + z e021;
 // plane a x + b y + c z + d = 0  ↔  a e1 + b e2 + c e3 + d e0; join A ∨ B = (A* ∧ B*)^(−*)

@@ -1,9 +1,9 @@
 // PGA R(d,0,1) for a compile-time dimension d (1 ≤ d ≤ 7): dense multivectors of 2^(d+1)
 // coefficients indexed by blade bitmask (bit 0 = e0, bit i = e_i), products from tables built at
-// compile time. Conventions follow ERRATA §0.1 in any d: e0² = 0, e_i² = 1; the Hodge dual
-// e_J e_J* = I = e0 e1 … ed; the join A ∨ B = (A* ∧ B*)^(−*) (paper eq. 2.2); the point
-// x ↦ (e0 + Σ x_i e_i)*, so o ∨ v1 ∨ … ∨ vd = det[v1 … vd] and S ∨ o = (−1)^d o ∨ S.
-// For d = 3 the coefficients agree with pga3 (named blades there: e032 = −e023, …).
+// compile time. Conventions follow docs/conventions.md §1–§7 in any d: e0² = 0, e_i² = 1; the Hodge
+// dual e_J e_J* = I = e0 e1 … ed; the join A ∨ B = (A* ∧ B*)^(−*) (paper eq. 2.2); the point x ↦
+// (e0 + Σ x_i e_i)*, so o ∨ v1 ∨ … ∨ vd = det[v1 … vd] and S ∨ o = (−1)^d o ∨ S. For d = 3 the
+// coefficients agree with pga3 (named blades there: e032 = −e023, …).
 #pragma once
 
 #include <algorithm>
@@ -189,14 +189,14 @@ template <int D>
 constexpr Multivector<D> left_contraction(const Multivector<D>& a, const Multivector<D>& b) {
   return detail::product(a, b, [](BladeMask i, BladeMask j) { return (i & ~j) == 0; });
 }
-// Symmetric inner product Σ ⟨A_r B_s⟩_|r−s| (ERRATA §0.1 `|`).
+// Symmetric inner product Σ ⟨A_r B_s⟩_|r−s| (docs/conventions.md §4 `|`).
 template <int D>
 constexpr Multivector<D> inner(const Multivector<D>& a, const Multivector<D>& b) {
   return detail::product(a, b,
                          [](BladeMask i, BladeMask j) { return (i & ~j) == 0 || (j & ~i) == 0; });
 }
 
-// Hodge dual, e_J e_J* = I (ERRATA §0.1).
+// Hodge dual, e_J e_J* = I (docs/conventions.md §3).
 template <int D>
 constexpr Multivector<D> dual(const Multivector<D>& a) {
   return detail::complement(a, [](BladeMask m) { return clifford::dual_sign(m, D + 1); });
@@ -273,7 +273,8 @@ constexpr Multivector<D> operator!(const Multivector<D>& a) {
 
 // ---- points, directions, planes -----------------------------------------------------------------
 
-// The point x = (e0 + Σ x_i e_i)* (ERRATA §0.1; for d = 3: e123 + x e032 + y e013 + z e021).
+// The point x = (e0 + Σ x_i e_i)* (docs/conventions.md §2; for d = 3:
+// e123 + x e032 + y e013 + z e021).
 template <int D>
 constexpr Multivector<D> point(const Vec<D>& x) {
   Multivector<D> v = blade<D>(1);
@@ -314,7 +315,7 @@ constexpr Vec<D> position(const Multivector<D>& p) {
   return x;
 }
 
-// ---- norms and the Euclidean split (ERRATA §0.1, paper eq. 3.1) --------------------------------
+// ---- norms and the Euclidean split (docs/conventions.md §6, paper eq. 3.1) ----------------------
 
 // Euclidean part A_E (blades without e0) and ideal part e0 A_I (blades with e0).
 template <int D>

@@ -1,5 +1,5 @@
 // Axis-aligned bounding boxes: the cheap "where is the mesh" that picks the reference point for
-// accumulation (ERRATA §6) and the scale for relative thresholds.
+// accumulation (docs/conventions.md §13) and the scale for relative thresholds.
 #pragma once
 
 #include <algorithm>

@@ -18,7 +18,8 @@ inline std::optional<double> parse_number(std::string_view text) {
   double value = 0;
   const char* end = text.data() + text.size();
   const auto [stop, ec] = std::from_chars(text.data(), end, value);
-  if (text.empty() || ec != std::errc{} || stop != end || !std::isfinite(value)) return std::nullopt;
+  if (text.empty() || ec != std::errc{} || stop != end || !std::isfinite(value))
+    return std::nullopt;
   return value;
 }
 

@@ -2,6 +2,7 @@
 // algebra (point(x,y,z), a plane's normal, a line's direction and moment) travel as Vec3.
 #pragma once
 
+#include <array>
 #include <cmath>
 
 namespace pgamesh {
@@ -24,6 +25,9 @@ struct Vec3 {
 };
 
 using Vec3d = Vec3<double>;
+
+// A 3×3 matrix of doubles, row by row: m[row][column] (inertia tensors, rotations).
+using Mat3 = std::array<std::array<double, 3>, 3>;
 
 template <class T>
 constexpr T dot(Vec3<T> a, Vec3<T> b) {

@@ -1,11 +1,12 @@
 // Volume integrals of a solid from its oriented boundary triangles: the one place where the
-// per-face sums of paper Table 1 and §5 (as corrected in ERRATA §0.2, §1) live.
+// per-face sums of paper Table 1 and §5 (as corrected in docs/conventions.md §8–§10) live.
 //
 // Each outward (CCW-from-outside) triangle (a, b, c), given relative to a reference point o, adds
 // the signed tetrahedron (o, a, b, c) with D = o ∨ a ∨ b ∨ c = o ∨ F = det(a, b, c) = 6 V_tet:
 //   volume         V     = (1/6)   Σ D                        paper Table 1, o on the left
-//                                                              (ERRATA §0.2)
-//   first moment   ∫r    = (1/24)  Σ D (a + b + c + o)        paper eq. 5.3, ERRATA §0.2
+//                                                              (docs/conventions.md §8)
+//   first moment   ∫r    = (1/24)  Σ D (a + b + c + o)        paper eq. 5.3 with the sign
+//                                                              of docs/conventions.md §9
 //   second moment  ∫rrᵀ  = (1/120) Σ D (aaᵀ + bbᵀ + ccᵀ + ssᵀ), s = a + b + c
 //                                                              pyramid reference eq. 24; the 1/60
 //                                                              frame of paper eqs. 5.5/5.6 summed
@@ -14,21 +15,18 @@
 // the gap of an open surface (Cor. 4.1).
 //
 // Coordinates are taken relative to a reference point near the mesh before the carrier is formed,
-// which keeps every digit whatever the distance of the mesh from the origin (ERRATA §6).
+// which keeps every digit whatever the distance of the mesh from the origin (docs/conventions.md
+// §13).
 #pragma once
 
 #include <array>
 #include <cstddef>
 
-#include "pgamesh/algebra/double4.hpp"
 #include "pgamesh/algebra/pga3.hpp"
 #include "pgamesh/core/vec3.hpp"
 #include "pgamesh/geometry/carrier.hpp"
 
 namespace pgamesh {
-
-// Symmetric 3×3 matrix, row-major, plain data.
-using Mat3 = std::array<std::array<double, 3>, 3>;
 
 // Raw sums, scaled as accumulated (×2, ×6, ×24, ×120): adding partial sums is reassociation only,
 // so sums from several threads combine with +=, in a fixed order for reproducible results.
@@ -55,18 +53,6 @@ struct BasicBoundarySums {
 };
 
 using BoundarySums = BasicBoundarySums<double>;
-
-// Lane j of sums of four faces side by side: the sums, in double, of the faces of lane j.
-inline BoundarySums lane(const BasicBoundarySums<Double4>& s, int j) {
-  BoundarySums out;
-  out.area2 = s.area2.lane(j);
-  out.carrier_sum = {s.carrier_sum.e0.lane(j), s.carrier_sum.e1.lane(j), s.carrier_sum.e2.lane(j),
-                     s.carrier_sum.e3.lane(j)};
-  out.volume6 = s.volume6.lane(j);
-  out.moment24 = {s.moment24.x.lane(j), s.moment24.y.lane(j), s.moment24.z.lane(j)};
-  for (int i = 0; i < 6; ++i) out.second120[i] = s.second120[i].lane(j);
-  return out;
-}
 
 // Adds the solid parts of the signed tetrahedron (o, a, b, c) — volume, first and second
 // moments, with D = o ∨ F = det(a, b, c) — and returns the carrier F = a ∨ b ∨ c. Coordinates are
@@ -165,7 +151,7 @@ inline Vec3d centroid(const BodyMoments& m) {
 Mat3 central_second_moment(const BodyMoments& m);
 
 // Inertia tensor from a second-moment matrix M at density ρ: ρ (tr(M) 1 − M), whose off-diagonal
-// entries are minus the products of inertia (ERRATA §0.2, I_xy = −∫xy dm).
+// entries are minus the products of inertia (docs/conventions.md §10, I_xy = −∫xy dm).
 Mat3 inertia_from_second_moment(const Mat3& second, double density);
 
 // parallel(r) = |r|² 1 − r rᵀ (pyramid reference eq. 24): I_O = I_C + m parallel(c).

@@ -3,10 +3,11 @@
 //   magnitude of K          ‖B‖∞ / k!                                   (Thm 4.2)
 //   magnitude of the gap    ‖B‖ / (k − 1)!                              (Cor. 4.1)
 //   signed d-volume (k = d) (o ∨ B) / d!                                (Table 1, o on the left)
-//   centre of mass (k = d)  Σ (v0 + … + v_(d−1) + o)(o ∨ S) / (d + 1)!   (eq. 5.3, ERRATA §1 sign)
+//   centre of mass (k = d)  Σ (v0 + … + v_(d−1) + o)(o ∨ S) / (d + 1)!   (eq. 5.3, with the sign
+//                                                                    of docs/conventions.md §9)
 // A boundary is a list of (k−1)-simplices, each k vertex indices, oriented so that the complex's
 // k-simplices induce them (outward for a closed d-volume). Coordinates are taken relative to a
-// reference point o near the complex before any carrier is formed (ERRATA §6).
+// reference point o near the complex before any carrier is formed (docs/conventions.md §13).
 #pragma once
 
 #include <span>
@@ -99,7 +100,7 @@ double signed_volume(const BoundarySums<D>& s) {
 }
 
 // Centre of mass as a homogeneous point with weight = signed volume (paper eq. 5.3 with o on the
-// left, ERRATA §1), in coordinates relative to the reference point.
+// left, docs/conventions.md §8), in coordinates relative to the reference point.
 template <int D>
 pgad::Multivector<D> center_of_mass_point(const BoundarySums<D>& s) {
   if (s.k != D) throw std::invalid_argument("center_of_mass: needs a d-complex");

@@ -1,6 +1,6 @@
 // The boundary sums of one face of a polygon mesh: the single place where mass_properties() and
-// the PLY reader that sums faces as it parses them (ply_mass_properties.hpp) turn a face into sums,
-// so both give the same bits.
+// the readers' summing consumers (ASCII STL, PLY: faces summed as they are parsed) turn a face into
+// sums, so every path gives the same bits.
 #pragma once
 
 #include <cstddef>

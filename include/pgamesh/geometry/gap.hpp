@@ -1,4 +1,5 @@
-// The gap of an open boundary and the volume ambiguity it implies (paper Cor. 4.1, ERRATA §0.2).
+// The gap of an open boundary and the volume ambiguity it implies (paper Cor. 4.1,
+// docs/conventions.md §6).
 //
 // For a closed surface the carriers sum to a pure e0 part; for an open one the normal part of Σ F
 // is what the holes would contribute if they were capped (with opposite orientation), so

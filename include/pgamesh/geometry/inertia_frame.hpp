@@ -1,9 +1,9 @@
 // The principal frame of an inertia tensor by the rotor Jacobi of paper eqs. 5.7–5.9, as
-// corrected in ERRATA §1 and §0.2: each Givens step is a rotor R_k = exp(−½ φ e_pq) that turns the
-// tensor's rows (vectors I_j) by I′_i = Σ_j (e_j · (R̃_k e_i R_k)) R_k I_j R̃_k, the rotors compose
-// as R ← R_k R, and the eigenvectors are u_i = R̃ e_i R. Sorting the moments and fixing the axes'
-// signs are rotors too (quarter and half turns about frame axes), so the frame stays right-handed
-// and is always given by one rotor.
+// corrected in docs/conventions.md §10, §11: each Givens step is a rotor R_k = exp(−½ φ e_pq) that
+// turns the tensor's rows (vectors I_j) by I′_i = Σ_j (e_j · (R̃_k e_i R_k)) R_k I_j R̃_k, the rotors
+// compose as R ← R_k R, and the eigenvectors are u_i = R̃ e_i R. Sorting the moments and fixing the
+// axes' signs are rotors too (quarter and half turns about frame axes), so the frame stays
+// right-handed and is always given by one rotor.
 #pragma once
 
 #include <array>

@@ -1,8 +1,8 @@
 // A polygonal face as a boundary element: the carrier of a face with k corners is the sum of the
 // carriers of the fan (c0, c_i, c_{i+1}); its normal part is Σ c_i × c_{i+1}, which depends on the
 // rim only, so the area ½‖Σ F‖ is the polygon's area for any planar polygon, concave ones included
-// (paper §4c, ERRATA §1 Table 1). The volume terms of a non-planar polygon are those of its fan
-// from the first corner.
+// (paper §4c, docs/conventions.md §6). The volume terms of a non-planar polygon are those of its
+// fan from the first corner.
 #pragma once
 
 #include <cstddef>

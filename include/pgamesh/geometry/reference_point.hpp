@@ -1,7 +1,7 @@
 // The point about which a mesh's carriers are accumulated. PGA leaves the origin free, so sums are
 // formed from coordinates relative to a point near the mesh: that keeps every digit however far
-// the mesh lies from the coordinate origin (ERRATA §6). Mass properties, topology and fuel slicing
-// all take it from here.
+// the mesh lies from the coordinate origin (docs/conventions.md §13). Mass properties, topology and
+// fuel slicing all take it from here.
 #pragma once
 
 #include <span>
@@ -14,7 +14,7 @@ namespace pgamesh {
 // The centre of the bounding box of the mesh's vertices (the origin for a mesh without vertices).
 Vec3d reference_point(const Mesh& mesh);
 
-// The same point for a mesh whose vertices are all a reader has kept (ply_mass_properties.hpp).
+// The same point for the vertices a reader has kept (a summing consumer builds no Mesh).
 Vec3d reference_point(std::span<const Vec3d> vertices);
 
 }  // namespace pgamesh

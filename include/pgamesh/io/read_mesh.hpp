@@ -9,6 +9,7 @@
 #include <string_view>
 
 #include "pgamesh/core/mesh.hpp"
+#include "pgamesh/io/mesh_format.hpp"
 
 namespace pgamesh {
 
@@ -31,12 +32,5 @@ Mesh read_mesh_bytes(std::span<const char> bytes, const std::string& name,
 // OBJ statements; an unrecognised binary file is reported as a (broken) binary STL so that its
 // reader explains the size mismatch. unknown for empty or unrecognised text.
 MeshFormat detect_format(std::span<const char> bytes);
-
-// The format named by a --format option: "stl", "stl-ascii", "stl-binary", "obj", "ply",
-// "ply-ascii", "ply-binary-little-endian" (or "ply-le"), "ply-binary-big-endian" (or "ply-be"),
-// "off" (case-insensitive); unknown for anything else, including "auto". A forced format picks the
-// reader family: ASCII vs binary STL is still decided by size arithmetic, and a PLY's own header
-// states its encoding.
-MeshFormat format_from_name(std::string_view name);
 
 }  // namespace pgamesh

@@ -18,7 +18,6 @@ namespace pgamesh::dcga {
 
 using clifford::Multivector;
 using quadric::Quadric;
-using quadric::Vec3;
 
 // Generator names in basis order, as the golden files spell them.
 inline constexpr std::array<const char*, 10> generator_names = {"eo1", "e1", "e2", "e3", "einf1",
@@ -27,9 +26,9 @@ inline constexpr std::array<const char*, 10> generator_names = {"eo1", "e1", "e2
 const clifford::Algebra& algebra();
 
 // The CGA point of copy 1 or 2: eo_k + x e + ½|x|² einf_k (Breuils eq. 2).
-Multivector cga_point(const Vec3& p, int copy);
+Multivector cga_point(const Vec3d& p, int copy);
 // X = x1 ∧ x2 (Breuils eqs. 3–4).
-Multivector point(const Vec3& p);
+Multivector point(const Vec3d& p);
 
 // The monomials a DCGA point carries (Breuils eq. 4): the ten of a quadric, then the quartic ones
 // r², x r², y r², z r², r⁴ with r² = x² + y² + z².
@@ -52,25 +51,25 @@ Multivector quadric(const Quadric& q);
 Quadric coefficients(const Multivector& q);
 
 // Q·X on the engine (Breuils eq. 11): F(p) for a quadric, the quartic's value for a quartic.
-double value(const Multivector& q, const Vec3& p);
+double value(const Multivector& q, const Vec3d& p);
 
 // ∇F at p by eqs. 14–15: n_k = (D_k × Q)·X, × the commutator product ½(AB − BA).
-Vec3 gradient(const Multivector& q, const Vec3& p);
+Vec3d gradient(const Multivector& q, const Vec3d& p);
 
 // Tangent plane Π = (n1 + δ einf1) ∧ (n2 + δ einf2), n1 = ∇F on e1..e3, n2 on e4..e6 (eqs. 15–17)
 // with δ = n1·x1 (eq. 18) = n·p: a DCGA plane with Π·X = −(n·x − n·p)² (docs §3.3).
-Multivector tangent_plane(const Multivector& q, const Vec3& p);
+Multivector tangent_plane(const Multivector& q, const Vec3d& p);
 
 // Euclidean coordinates of a (scaled) DCGA point: X̂ = X/(X·T_1) (eq. 55 corrected: the printed
 // X/(X·(einf1∧einf2)) gives −X̂), x = T_x·X̂, y = T_y·X̂, z = T_z·X̂ (eq. 56 corrected: X̂·e1 is a
 // vector). Throws ModelError when X·T_1 = 0.
-Vec3 point_coordinates(const Multivector& x);
+Vec3d point_coordinates(const Multivector& x);
 
 // Versors acting on both copies: translation by t, T = T1 T2 with T_k = 1 − ½ t_k einf_k (t_k the
 // vector t in copy k), and the rotation turning x_i towards x_j by theta, R = R1 R2 with
 // R_k = cos θ/2 − sin θ/2 e_i^(k) e_j^(k). V X(p) Ṽ = X(moved p), so V Q Ṽ is the moved surface
 // (for quadrics and quartics alike).
-Multivector translator(const Vec3& t);
+Multivector translator(const Vec3d& t);
 Multivector rotor(int i, int j, double theta);
 Multivector transform(const Multivector& versor, const Multivector& q);
 
@@ -80,8 +79,8 @@ struct Quartic {
   std::array<double, 15> k{};
 };
 Quartic from_quadric(const Quadric& q);
-double value(const Quartic& s, const Vec3& p);  // closed form
-Multivector quartic(const Quartic& s);          // Σ k_m T_m
+double value(const Quartic& s, const Vec3d& p);  // closed form
+Multivector quartic(const Quartic& s);           // Σ k_m T_m
 // Torus about the z axis through the origin: (r² + R² − ρ²)² − 4R²(x² + y²) = 0 (Easter–Hitzer),
 // R the distance of the tube's centre circle from the axis, ρ the tube radius.
 Quartic torus(double major_radius, double minor_radius);

@@ -18,7 +18,6 @@
 namespace pgamesh::dpga {
 
 using quadric::Quadric;
-using quadric::Vec3;
 using Algebra = graded::Algebra<4, 4>;
 using Vector = graded::Vector<Algebra>;
 using Bivector = graded::Bivector<Algebra>;
@@ -33,8 +32,8 @@ Vector w(int i);
 Vector w_star(int i);
 
 // p = x w0 + y w1 + z w2 + weight w3 and p* = x w0* + y w1* + z w2* + weight w3* (Breuils eq. 31).
-Vector point(const Vec3& p, double weight = 1.0);
-Vector dual_point(const Vec3& p, double weight = 1.0);
+Vector point(const Vec3d& p, double weight = 1.0);
+Vector dual_point(const Vec3d& p, double weight = 1.0);
 
 // Q = 4a w0*∧w0 + 4b w1*∧w1 + 4c w2*∧w2 + 4j w3*∧w3 + 2d (w0*∧w1 + w1*∧w0) + 2e (w0*∧w2 + w2*∧w0)
 //   + 2f (w1*∧w2 + w2*∧w1) + 2g (w0*∧w3 + w3*∧w0) + 2h (…w1, w3…) + 2i (…w2, w3…) (Breuils eq. 34,
@@ -45,12 +44,12 @@ Bivector quadric(const Quadric& q);
 Quadric coefficients(const Bivector& q);
 
 // F(p) = (p ⌋ Q)·p* computed on the graded engine (Breuils eqs. 35–37).
-double value(const Bivector& q, const Vec3& p);
+double value(const Bivector& q, const Vec3d& p);
 
 // The polar plane Π* = Q ⌊ p* (Breuils eq. 38) as its coefficients on w0*…w3*:
 // (∂F/∂x, ∂F/∂y, ∂F/∂z, g x + h y + i z + 2j); the tangent plane when F(p) = 0 (then the last
 // entry equals −∇F·p).
-std::array<double, 4> polar_plane(const Bivector& q, const Vec3& p);
+std::array<double, 4> polar_plane(const Bivector& q, const Vec3d& p);
 
 // The rotor turning x_i towards x_j by theta (i ≠ j in 0…2), acting alike on p and p*:
 //   R = exp(−θ (w_i ∧ w_j* − w_j ∧ w_i*))    (Breuils eq. 73 corrected; docs §2.4)

@@ -15,12 +15,14 @@
 #include <span>
 #include <string_view>
 
+#include "pgamesh/core/vec3.hpp"
 #include "pgamesh/models/model_error.hpp"
 
 namespace pgamesh::quadric {
 
-using Vec3 = std::array<double, 3>;
-using Mat3 = std::array<std::array<double, 3>, 3>;
+// Points and 3×3 matrices are the core's (core/vec3.hpp).
+using pgamesh::Mat3;
+using pgamesh::Vec3d;
 using Mat4 = std::array<std::array<double, 4>, 4>;
 
 // The ten coefficients a … j of F, in the order above.
@@ -37,20 +39,20 @@ inline constexpr std::array<std::string_view, 10> monomial_names = {"x2", "y2", 
                                                                     "yz", "x",  "y",  "z",  "1"};
 
 // The monomials x², y², z², xy, xz, yz, x, y, z, 1 at p.
-std::array<double, 10> monomials(const Vec3& p);
+std::array<double, 10> monomials(const Vec3d& p);
 
 // F(p) (Breuils eq. 37, the value every model's point test reduces to).
-double value(const Quadric& q, const Vec3& p);
+double value(const Quadric& q, const Vec3d& p);
 
 // ∇F(p) = (2a x + d y + e z + g, 2b y + d x + f z + h, 2c z + e x + f y + i) (Breuils eqs. 15, 45).
-Vec3 gradient(const Quadric& q, const Vec3& p);
+Vec3d gradient(const Quadric& q, const Vec3d& p);
 
 // ∇F(p)/‖∇F(p)‖. Throws ModelError at a singular point (zero gradient, e.g. a cone's apex).
-Vec3 unit_normal(const Quadric& q, const Vec3& p);
+Vec3d unit_normal(const Quadric& q, const Vec3d& p);
 
 // Tangent plane at p as [n_x, n_y, n_z, −n·p] with n = ∇F(p): the plane n·x − n·p = 0 through p
 // (for p on the surface; Breuils eqs. 17–18, 38, 46 corrected in docs/models-quadrics.md).
-std::array<double, 4> tangent_plane(const Quadric& q, const Vec3& p);
+std::array<double, 4> tangent_plane(const Quadric& q, const Vec3d& p);
 
 // The symmetric matrices: F(x) = xᵀ M3 x + (g, h, i)·x + j = [x 1] M4 [x 1]ᵀ.
 Mat3 matrix3(const Quadric& q);
@@ -67,8 +69,8 @@ void check_finite(const Quadric& q);
 
 // ---------------------------------------------------------------------------------- shapes
 // (x−c)ᵀ diag(1/r²) (x−c) − 1, semi-axes r along x, y, z.
-Quadric ellipsoid(const Vec3& center, const Vec3& semi_axes);
-Quadric sphere(const Vec3& center, double radius);
+Quadric ellipsoid(const Vec3d& center, const Vec3d& semi_axes);
+Quadric sphere(const Vec3d& center, double radius);
 
 // ---------------------------------------------------------------------------- line meeting
 enum class LineKind {
@@ -90,23 +92,23 @@ struct LineIntersection {
   LineKind kind = LineKind::none;
   int count = 0;  // number of entries of t and points in use (0, 1 or 2)
   std::array<double, 2> t{};
-  std::array<Vec3, 2> points{};
+  std::array<Vec3d, 2> points{};
   std::array<double, 3> quadratic{};  // A, B, C
 };
-LineIntersection intersect_line(const Quadric& q, const Vec3& origin, const Vec3& direction,
+LineIntersection intersect_line(const Quadric& q, const Vec3d& origin, const Vec3d& direction,
                                 double relative_tolerance = 0.0);
 
 // --------------------------------------------------------------------- rigid motions (direct)
 // G(x) = F(A x + b): the substitution behind every transform below (M4 ↦ Hᵀ M4 H, H = [A b; 0 1]).
-Quadric substitute(const Quadric& q, const Mat3& a, const Vec3& b);
+Quadric substitute(const Quadric& q, const Mat3& a, const Vec3d& b);
 // The surface moved by t: F(x − t).
-Quadric translate(const Quadric& q, const Vec3& t);
+Quadric translate(const Quadric& q, const Vec3d& t);
 // The surface rotated by the rotation matrix r about the origin: F(rᵀ x).
 Quadric rotate(const Quadric& q, const Mat3& r);
 // Rotation by theta in the (x_i, x_j) coordinate plane turning x_i towards x_j (i ≠ j, 0…2).
 Mat3 plane_rotation(int i, int j, double theta);
 // Rotation by theta (right-handed) about the unit axis (Rodrigues).
-Mat3 axis_rotation(const Vec3& axis, double theta);
+Mat3 axis_rotation(const Vec3d& axis, double theta);
 
 // ------------------------------------------------------------------------ classification
 enum class QuadricType {
@@ -136,7 +138,7 @@ std::string_view to_string(QuadricType type);
 // terms they were computed from (so the test is invariant under scaling of F and of space).
 struct Classification {
   QuadricType type = QuadricType::degenerate;
-  Vec3 eigenvalues{};                    // of M3, ascending
+  Vec3d eigenvalues{};                   // of M3, ascending
   Mat3 axes{};                           // row k: unit eigenvector of eigenvalues[k]
   std::array<double, 4> eigenvalues4{};  // of M4, ascending
   int rank3 = 0, rank4 = 0;
@@ -157,26 +159,26 @@ Classification classify(const Quadric& q, double relative_tolerance = 1e-9);
 struct FitResult {
   Quadric quadric;  // normalized(), global coordinates
   Quadric local;    // unit norm, in u = (x − centroid)/scale
-  Vec3 centroid{};
+  Vec3d centroid{};
   double scale = 1;
   double algebraic_rms = 0, algebraic_max = 0;
   double geometric_rms = 0, geometric_max = 0;
   double smallest_eigenvalue_ratio = 0;         // λ1/λmax of the normalized scatter matrix
   double second_smallest_eigenvalue_ratio = 0;  // λ2/λmax: near 0 = ill-determined
 };
-FitResult fit(std::span<const Vec3> points);
+FitResult fit(std::span<const Vec3d> points);
 
 // Residuals of any quadric on points (the quadric is normalized() first).
 struct Residuals {
   double algebraic_rms = 0, algebraic_max = 0;
   double geometric_rms = 0, geometric_max = 0;
 };
-Residuals residuals(const Quadric& q, std::span<const Vec3> points);
+Residuals residuals(const Quadric& q, std::span<const Vec3d> points);
 
 // The quadric through exactly 9 points (the null vector of the 9×10 monomial matrix, by
 // elimination with complete pivoting on centred and scaled points): the closed form of
 // Breuils eq. 70. Throws ModelError for a non-finite coordinate or when the points do not
 // determine a unique quadric (a pivot ≤ 1e-10 of the largest: points on a lower-order surface).
-Quadric through_nine_points(std::span<const Vec3, 9> points);
+Quadric through_nine_points(std::span<const Vec3d, 9> points);
 
 }  // namespace pgamesh::quadric

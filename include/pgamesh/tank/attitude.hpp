@@ -13,7 +13,7 @@
 namespace pgamesh::tank {
 
 /// The unit up vector in the tank frame for pitch and roll (radians), starting from the level
-/// tank's up vector `level_up` (normalized). Built with the PGA rotors of ERRATA §0.1:
+/// tank's up vector `level_up` (normalized). Built with the PGA rotors of docs/conventions.md §7:
 /// R = R_pitch R_roll, up = R̃ level_up R.
 Vec3d up_from_attitude(Vec3d level_up, double pitch, double roll);
 

@@ -21,9 +21,9 @@ struct SurfaceFrame {
   Vec3d axis1{1, 0, 0}, axis2{0, 1, 0};
 };
 
-/// The frame with origin the projection of `near` onto the plane (ERRATA §0.2: o′ = the foot of
-/// the perpendicular from a point near the mesh) and axis1 the tank's x axis projected onto the
-/// plane (its y axis when x is within 1e-6 rad of up), axis2 = up × axis1.
+/// The frame with origin the projection of `near` onto the plane (docs/conventions.md §12: o′ = the
+/// foot of the perpendicular from a point near the mesh) and axis1 the tank's x axis projected onto
+/// the plane (its y axis when x is within 1e-6 rad of up), axis2 = up × axis1.
 SurfaceFrame surface_frame(const FuelPlane& plane, Vec3d near);
 
 /// Plane coordinates of x in the frame (x given as x − o′).

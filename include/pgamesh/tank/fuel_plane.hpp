@@ -1,5 +1,5 @@
 // The fuel plane of a tank: up·x = level with a unit up vector; the fuel is the part up·x ≤ level
-// (DESIGN.md §5, ERRATA §0.2).
+// (docs/fuel.md, docs/conventions.md §12).
 #pragma once
 
 #include <cmath>
@@ -12,7 +12,8 @@
 namespace pgamesh::tank {
 
 /// The normalized plane p = (up·x − level) as a PGA plane (normal up, e0 coefficient −level): its
-/// normal points out of the fuel, so p ∨ v > 0 above and p ∨ v ≤ 0 in the fuel (ERRATA §0.2).
+/// normal points out of the fuel, so p ∨ v > 0 above and p ∨ v ≤ 0 in the fuel (docs/conventions.md
+/// §12).
 struct FuelPlane {
   Vec3d up{0, 0, 1};  // unit
   double level = 0;

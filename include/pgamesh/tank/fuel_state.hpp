@@ -17,7 +17,8 @@ struct FuelState {
   double fraction = 0;      // volume / tank volume
   bool has_center = false;  // false for an empty tank (no centre of mass)
   Vec3d center_of_mass{};   // absolute coordinates
-  Mat3 inertia_com{};       // about the centre of mass, I_xy = −∫xy dV (ERRATA §0.2)
+  Mat3 inertia_com{};       // about the centre of mass (docs/conventions.md §10),
+                            // I_xy = −∫xy dV
   double wetted_area = 0;   // tank wall under the fuel
   double surface_area = 0;  // the free surface = gap ½‖F‖ of the kept wall (Cor. 4.1)
   FreeSurface surface;      // centroid and second moments of area of the free surface
@@ -32,9 +33,10 @@ FuelState fuel_state(const Tank& tank, const FuelPlane& plane, const SliceContex
                      const SliceSums& sums, Side side);
 
 /// The reference pass: every triangle cut about o′ = the projection onto the plane of the centre
-/// of the fuel-side vertices' box (ERRATA §6: near the kept part; the tank's reference point when
-/// no vertex is fuel), ERRATA §0.2 eq. 4.13 corrected: V = (1/6) o′ ∨ F, COM from eq. 5.4
-/// corrected. Costs one pass over the vertices (heights) and one over the triangles.
+/// of the fuel-side vertices' box (docs/conventions.md §13: near the kept part; the tank's
+/// reference point when no vertex is fuel), eq. 4.13 corrected as in docs/conventions.md §12:
+/// V = (1/6) o′ ∨ F, COM from eq. 5.4 corrected. Costs one pass over the vertices (heights) and one
+/// over the triangles.
 FuelState fuel_naive(const Tank& tank, const FuelPlane& plane);
 
 }  // namespace pgamesh::tank

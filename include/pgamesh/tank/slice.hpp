@@ -1,7 +1,7 @@
-// The one place where a triangle is cut by the fuel plane (paper §4d, ERRATA §0.2 and §1 on
-// eqs. 4.11–4.13): the kept part of each triangle is added to the wall sums and its cut segment to
-// the free-surface sums. Everything else in the tank layer (naive pass, sorted sweep, hierarchy)
-// calls this.
+// The one place where a triangle is cut by the fuel plane (paper §4d; eqs. 4.11–4.13 as corrected
+// in docs/conventions.md §12): the kept part of each triangle is added to the wall sums and its cut
+// segment to the free-surface sums. Everything else in the tank layer (naive pass, sorted sweep,
+// hierarchy) calls this.
 #pragma once
 
 #include "pgamesh/core/vec3.hpp"
@@ -11,8 +11,8 @@
 namespace pgamesh::tank {
 
 /// Which side of the plane is kept. The fuel keeps p ∨ v ≤ 0 (vertices on the plane are fuel,
-/// ERRATA §0.2); the ullage keeps p ∨ v > 0, its exact complement, so fuel = tank − ullage also
-/// for faces lying in the plane.
+/// docs/conventions.md §12); the ullage keeps p ∨ v > 0, its exact complement, so fuel = tank −
+/// ullage also for faces lying in the plane.
 enum class Side { fuel, ullage };
 
 /// Where the sums are taken: the wall sums about `reference`; the free-surface sums in `frame`.
@@ -34,9 +34,9 @@ struct SliceSums {
 void subtract(BoundarySums& s, const BoundarySums& t);
 
 /// The split vertex on the edge (lo, hi) with heights d_lo ≤ 0 < d_hi:
-/// (p∨hi) lo − (p∨lo) hi normalized (ERRATA on eq. 4.11), evaluated from the lower end so that a
-/// vertex on the plane (d_lo = 0) is returned exactly and both triangles of an edge get the same
-/// point.
+/// (p∨hi) lo − (p∨lo) hi normalized (eq. 4.11 as in docs/conventions.md §12), evaluated from the
+/// lower end so that a vertex on the plane (d_lo = 0) is returned exactly and both triangles of an
+/// edge get the same point.
 inline Vec3d split_point(Vec3d lo, double d_lo, Vec3d hi, double d_hi) {
   return lo + (d_lo / (d_lo - d_hi)) * (hi - lo);
 }

@@ -1,5 +1,6 @@
 // A closed mesh prepared for fuel queries: its triangles (polygons fanned from their first
-// corner), a reference point near the mesh (ERRATA §6) and the sums of the whole tank.
+// corner), a reference point near the mesh (docs/conventions.md §13) and the sums of the whole
+// tank.
 #pragma once
 
 #include <algorithm>

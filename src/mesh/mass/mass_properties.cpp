@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "pgamesh/geometry/chunked_sums.hpp"
+#include "geometry/chunked_sums.hpp"
 #include "pgamesh/geometry/face_sums.hpp"
 #include "pgamesh/geometry/reference_point.hpp"
 
@@ -81,7 +81,7 @@ MassProperties mass_properties_from_sums(const BoundarySums& sums, Vec3d referen
     return p;
   }
   // Second moments about the centre of mass by the exact parallel-axis shift from the reference
-  // point, which lies near the mesh, so the shift cancels few digits (ERRATA §6).
+  // point, which lies near the mesh, so the shift cancels few digits (docs/conventions.md §13).
   const Vec3d c = centroid(m);
   p.center_of_mass = reference + c;
   p.inertia_com = inertia_from_second_moment(central_second_moment(m), p.density);

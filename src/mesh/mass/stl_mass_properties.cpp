@@ -1,10 +1,10 @@
-#include "pgamesh/mesh/mass/stl_mass_properties.hpp"
+#include "mesh/mass/stl_mass_properties.hpp"
 
 #include <cmath>
 
 #include "detail/memory/page_release.hpp"
+#include "geometry/chunked_sums.hpp"
 #include "io/stl_record_blocks.hpp"
-#include "pgamesh/geometry/chunked_sums.hpp"
 
 namespace pgamesh {
 

@@ -88,7 +88,8 @@ OrientationFix fix_orientation(Mesh& mesh, const OrientationOptions& options) {
       }
     }
 
-    // Signed volume with the walk's flips, about the component's bounding-box centre (ERRATA §6).
+    // Signed volume with the walk's flips, about the component's bounding-box centre
+    // (docs/conventions.md §13).
     Box3 box;
     for (std::uint32_t i = comp_start[k]; i < comp_start[k + 1]; ++i) {
       const std::uint32_t f = comp_faces[i];

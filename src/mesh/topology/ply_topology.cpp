@@ -3,7 +3,7 @@
 // same edge judging (edge_group.hpp), the same parts of the report (topology_parts.hpp) — with the
 // corner array replaced by reads of the file's face records: plain binary records (every list
 // holding three indices) sit at a fixed stride, so face f is at faces + f × stride.
-#include "pgamesh/mesh/topology/ply_topology.hpp"
+#include "mesh/topology/ply_topology.hpp"
 
 #include <algorithm>
 #include <array>
@@ -22,12 +22,12 @@
 #include "detail/memory/huge_pages.hpp"
 #include "detail/memory/page_release.hpp"
 #include "detail/memory/uninitialized_array.hpp"
+#include "geometry/chunked_sums.hpp"
 #include "io/ply_header.hpp"
 #include "mesh/topology/edge_group.hpp"
 #include "mesh/topology/topology_parts.hpp"
 #include "mesh/weld/weld_table.hpp"
 #include "pgamesh/core/bounding_box.hpp"
-#include "pgamesh/geometry/chunked_sums.hpp"
 #include "pgamesh/mesh/topology/boundary_loops.hpp"
 #include "pgamesh/mesh/topology/edges.hpp"
 

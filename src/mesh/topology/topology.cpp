@@ -6,12 +6,12 @@
 #include <string>
 
 #include "mesh/topology/topology_parts.hpp"
+#include "mesh/topology/triangle_topology.hpp"
+#include "mesh/weld/welded_triangles.hpp"
 #include "pgamesh/geometry/reference_point.hpp"
 #include "pgamesh/mesh/topology/components.hpp"
 #include "pgamesh/mesh/topology/duplicate_faces.hpp"
-#include "pgamesh/mesh/topology/triangle_topology.hpp"
 #include "pgamesh/mesh/weld/weld.hpp"
-#include "pgamesh/mesh/weld/welded_triangles.hpp"
 
 namespace pgamesh {
 

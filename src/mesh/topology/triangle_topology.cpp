@@ -1,4 +1,4 @@
-#include "pgamesh/mesh/topology/triangle_topology.hpp"
+#include "mesh/topology/triangle_topology.hpp"
 
 #include <algorithm>
 #include <array>
@@ -9,10 +9,10 @@
 #include "detail/memory/huge_pages.hpp"
 #include "detail/memory/uninitialized_array.hpp"
 #include "detail/parallel/two_threads.hpp"
+#include "geometry/chunked_sums.hpp"
 #include "mesh/topology/edge_group.hpp"
 #include "mesh/topology/topology_parts.hpp"
 #include "mesh/topology/union_find.hpp"
-#include "pgamesh/geometry/chunked_sums.hpp"
 #include "pgamesh/mesh/topology/boundary_loops.hpp"
 
 namespace pgamesh {

@@ -12,8 +12,8 @@
 #include "detail/parallel/two_threads.hpp"
 #include "io/stl_record_blocks.hpp"
 #include "mesh/weld/weld_table.hpp"
+#include "mesh/weld/welded_triangles.hpp"
 #include "pgamesh/core/input_error.hpp"
-#include "pgamesh/mesh/weld/welded_triangles.hpp"
 
 namespace pgamesh {
 

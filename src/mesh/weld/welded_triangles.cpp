@@ -1,11 +1,11 @@
-#include "pgamesh/mesh/weld/welded_triangles.hpp"
+#include "mesh/weld/welded_triangles.hpp"
 
 #include <stdexcept>
 #include <string>
 
 #include "detail/memory/huge_pages.hpp"
+#include "geometry/chunked_sums.hpp"
 #include "pgamesh/core/bounding_box.hpp"
-#include "pgamesh/geometry/chunked_sums.hpp"
 #include "pgamesh/mesh/weld/weld.hpp"
 
 namespace pgamesh {

@@ -4,10 +4,10 @@
 // The user's basis u_0 … u_(n−1) may be non-orthogonal. Blades of the user basis are OUTER
 // products u_J = u_j1 ∧ … ∧ u_jk (as the golden files name them, e.g. `eo^einf`). Metric products
 // are computed in an orthogonal basis f_0 … f_(n−1) (f_k² = λ_k) reached by a change of basis
-// u_i = Σ_k A_ik f_k: a hand-built exact map for isolated null pairs (ERRATA §0.3: e_∞ = e₊ + e₋,
-// e_o = ½(e₋ − e₊), scaled to the pair's u_a·u_b), otherwise the eigen-decomposition of the Gram
-// matrix. Its outermorphism carries blades to blades of the same grade and is an algebra
-// isomorphism, so products computed on f and mapped back are the products on u. Outer and
+// u_i = Σ_k A_ik f_k: a hand-built exact map for isolated null pairs (docs/conventions.md §15:
+// e_∞ = e₊ + e₋, e_o = ½(e₋ − e₊), scaled to the pair's u_a·u_b), otherwise the eigen-decomposition
+// of the Gram matrix. Its outermorphism carries blades to blades of the same grade and is an
+// algebra isomorphism, so products computed on f and mapped back are the products on u. Outer and
 // regressive products, duals and involutions do not depend on the metric and run on u directly.
 #pragma once
 

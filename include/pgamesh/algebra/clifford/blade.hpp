@@ -61,7 +61,7 @@ constexpr double conjugate_sign(int k) {
   return ((k * (k + 1) / 2) & 1) ? -1.0 : 1.0;
 }
 
-// Hodge (complement) dual of a basis blade in an n-generator algebra, ERRATA §0.1:
+// Hodge (complement) dual of a basis blade in an n-generator algebra, docs/conventions.md §3:
 // e_J e_J* = I with I = e_0 e_1 … e_(n−1) (all factors ascending), computed without the metric:
 // e_J* = s e_(~J) with s chosen so that e_J ∧ (s e_(~J)) = I, i.e. s = reorder_sign(J, ~J).
 constexpr double dual_sign(BladeMask j, int n) {
@@ -69,8 +69,8 @@ constexpr double dual_sign(BladeMask j, int n) {
   return reorder_sign(j, all & ~j);
 }
 
-// Undual: A^(−*) with A^(−*) ∧ A = I (ERRATA §0.1), so e_J^(−*) = s e_(~J), s = reorder_sign(~J,
-// J).
+// Undual: A^(−*) with A^(−*) ∧ A = I (docs/conventions.md §3), so e_J^(−*) = s e_(~J),
+// s = reorder_sign(~J, J).
 constexpr double undual_sign(BladeMask j, int n) {
   const BladeMask all = (n >= 32) ? ~BladeMask{0} : ((BladeMask{1} << n) - 1);
   return reorder_sign(all & ~j, j);

@@ -1,6 +1,6 @@
-// Products and functions of the general Clifford engine (conventions: ERRATA §0.1 operators).
-// Metric products run in the algebra's orthogonal basis (see algebra.hpp); outer, regressive and
-// the duals are metric-free and run on the user's basis.
+// Products and functions of the general Clifford engine (conventions: docs/conventions.md §4
+// operators). Metric products run in the algebra's orthogonal basis (see algebra.hpp); outer,
+// regressive and the duals are metric-free and run on the user's basis.
 #pragma once
 
 #include "pgamesh/algebra/clifford/algebra.hpp"
@@ -22,13 +22,14 @@ Multivector right_contraction(const Algebra& alg, const Multivector& a, const Mu
 // Scalar product ⟨A B⟩_0.
 double scalar_product(const Algebra& alg, const Multivector& a, const Multivector& b);
 
-// Symmetric ("fat dot") inner product Σ ⟨A_r B_s⟩_|r−s| (= ganja.js `|`, ERRATA §0.1).
+// Symmetric ("fat dot") inner product Σ ⟨A_r B_s⟩_|r−s| (= ganja.js `|`, docs/conventions.md §4).
 Multivector inner(const Algebra& alg, const Multivector& a, const Multivector& b);
 
 // Commutator product A × B = ½ (A B − B A).
 Multivector commutator(const Algebra& alg, const Multivector& a, const Multivector& b);
 
-// Hodge (complement) dual: e_J e_J* = I (ERRATA §0.1; metric-free, works in degenerate algebras).
+// Hodge (complement) dual: e_J e_J* = I (docs/conventions.md §3; metric-free, works in degenerate
+// algebras).
 Multivector dual(const Algebra& alg, const Multivector& a);
 
 // Undual A^(−*), with A^(−*) ∧ A = I, so undual(dual(A)) = A.
@@ -53,7 +54,7 @@ double norm(const Algebra& alg, const Multivector& a);
 // std::domain_error when A Ã is not a scalar or is zero.
 Multivector inverse(const Algebra& alg, const Multivector& a);
 
-// Sandwich V X Ṽ (motors and rotors act this way, ERRATA §0.1).
+// Sandwich V X Ṽ (motors and rotors act this way, docs/conventions.md §7).
 Multivector sandwich(const Algebra& alg, const Multivector& v, const Multivector& x);
 
 // exp(A): closed forms when A² is a scalar (cos/sin, cosh/sinh, 1 + A) or, in R(3,0,1), a scalar

@@ -189,7 +189,8 @@ constexpr Multivector<A, complement_grades<A::n>(G)> complement(const Multivecto
   return out;
 }
 
-// Hodge (complement) dual: e_J e_J* = I (ERRATA §0.1; metric-free, valid in degenerate algebras).
+// Hodge (complement) dual: e_J e_J* = I (docs/conventions.md §3; metric-free, valid in degenerate
+// algebras).
 template <class A, GradeMask G>
 constexpr auto dual(const Multivector<A, G>& x) {
   return complement<clifford::dual_sign>(x);

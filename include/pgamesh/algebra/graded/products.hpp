@@ -178,7 +178,8 @@ constexpr auto left_contraction(const Multivector<A, GA>& a, const Multivector<A
   return product<Product::left_contraction>(a, b);
 }
 
-// Symmetric inner product Σ ⟨A_r B_s⟩_|r−s| (clifford::inner, ganja.js `|`, ERRATA §0.1).
+// Symmetric inner product Σ ⟨A_r B_s⟩_|r−s| (clifford::inner, ganja.js `|`, docs/conventions.md
+// §4).
 template <class A, GradeMask GA, GradeMask GB>
 constexpr auto inner(const Multivector<A, GA>& a, const Multivector<A, GB>& b) {
   return product<Product::inner>(a, b);
@@ -231,8 +232,8 @@ double norm(const Multivector<A, G>& a) {
   return std::sqrt(std::abs(norm_squared(a)));
 }
 
-// Sandwich V X Ṽ projected to X's grades (motors and rotors act this way, ERRATA §0.1). The
-// second product keeps only the terms that land on X's grades, so the grades a versor cannot
+// Sandwich V X Ṽ projected to X's grades (motors and rotors act this way, docs/conventions.md §7).
+// The second product keeps only the terms that land on X's grades, so the grades a versor cannot
 // produce from X are never computed.
 template <class A, GradeMask GV, GradeMask GX>
 constexpr Multivector<A, GX> sandwich(const Multivector<A, GV>& v, const Multivector<A, GX>& x) {

@@ -50,7 +50,8 @@ T cos_minus_sinc_over_sq(T theta) {
 }  // namespace detail
 
 /// exp(B) of a bivector B (a Line; not necessarily simple): a normalized motor. exp(−θ/2 L)
-/// rotates by θ about the unit line L; exp(−½ t·(e01, e02, e03)) = translator(t) (ERRATA §0.1).
+/// rotates by θ about the unit line L; exp(−½ t·(e01, e02, e03)) = translator(t)
+/// (docs/conventions.md §7).
 template <class T>
 Motor<T> exp(const Line<T>& b) {
   const Vec3<T> l = b.direction(), m = b.moment();

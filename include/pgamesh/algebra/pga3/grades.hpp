@@ -1,7 +1,7 @@
 // PGA R(3,0,1) element types by grade, named as klein names them: Plane (grade 1), Line
 // (grade 2), Point (grade 3) and Motor (even: scalar + bivector + pseudoscalar). Conventions:
-// ERRATA §0.1 — basis 1, e0, e1, e2, e3, e01, e02, e03, e12, e31, e23, e021, e013, e032, e123,
-// e0123; e0² = 0, e1² = e2² = e3² = 1; point (x,y,z) = e123 + x e032 + y e013 + z e021; plane
+// docs/conventions.md §1 — basis 1, e0, e1, e2, e3, e01, e02, e03, e12, e31, e23, e021, e013, e032,
+// e123, e0123; e0² = 0, e1² = e2² = e3² = 1; point (x,y,z) = e123 + x e032 + y e013 + z e021; plane
 // a x + b y + c z + d = 0 ↔ a e1 + b e2 + c e3 + d e0.
 //
 // Every type lists its coefficients in `members` (pointers to members, in basis order), so the
@@ -48,7 +48,7 @@ struct Point {
   constexpr T weight() const { return e123; }
   /// w·(x, y, z) = (e032, e013, e021).
   constexpr Vec3<T> weighted() const { return {e032, e013, e021}; }
-  /// (x, y, z) = weighted() / weight() (ERRATA §0.1); infinite for a direction.
+  /// (x, y, z) = weighted() / weight() (docs/conventions.md §2); infinite for a direction.
   constexpr Vec3<T> euclidean() const { return Vec3<T>{e032, e013, e021} / e123; }
   static constexpr auto members =
       std::tuple{&Point::e021, &Point::e013, &Point::e032, &Point::e123};
@@ -57,7 +57,7 @@ struct Point {
 // Even grade: s + e01, e02, e03 (ideal bivector) + e12, e31, e23 (Euclidean bivector) + e0123.
 // Rotors (rotations), translators and screws are all motors: rotor(angle, axis) and
 // translator(t) (motor.hpp) build them; identity_motor() is 1 (a value-initialised Motor is 0,
-// like every other element). X ↦ M X M̃ moves every grade (ERRATA §0.1).
+// like every other element). X ↦ M X M̃ moves every grade (docs/conventions.md §7).
 template <class T>
 struct Motor {
   using scalar_type = T;
@@ -74,7 +74,7 @@ struct Motor {
 // ---- construction
 // --------------------------------------------------------------------------------
 
-/// The point (x, y, z) = e123 + x e032 + y e013 + z e021 (ERRATA §0.1, paper eq. 3.8).
+/// The point (x, y, z) = e123 + x e032 + y e013 + z e021 (docs/conventions.md §2, paper eq. 3.8).
 template <class T>
 constexpr Point<T> point(T x, T y, T z) {
   return {z, y, x, T(1)};
@@ -99,7 +99,7 @@ template <class T>
 constexpr Point<T> origin() {
   return {T(0), T(0), T(0), T(1)};
 }
-/// The plane a x + b y + c z + d = 0 as a e1 + b e2 + c e3 + d e0 (ERRATA §0.1).
+/// The plane a x + b y + c z + d = 0 as a e1 + b e2 + c e3 + d e0 (docs/conventions.md §2).
 template <class T>
 constexpr Plane<T> plane(T a, T b, T c, T d) {
   return {d, a, b, c};

@@ -1,6 +1,7 @@
 // The join (regressive product) A ∨ B = (A* ∧ B*)^(−*) (paper eq. 2.2) between grade types, as
 // `join(a, b)` and `a & b`. Joins of points are carriers: a line (edge), a plane (face), a scalar
-// (tetrahedron, 6 × signed volume). Signs: ERRATA §0.1 (klein and ganja.js differ on some).
+// (tetrahedron, 6 × signed volume). Signs: docs/conventions.md §5 (klein and ganja.js differ on
+// some, §4).
 #pragma once
 
 #include "pgamesh/algebra/pga3/grades.hpp"
@@ -16,7 +17,8 @@ constexpr Line<T> join(const Point<T>& a, const Point<T>& b) {
   return {m.x, m.y, m.z, d.z, d.y, d.x};
 }
 
-/// L ∨ v: normal d × P + w m, e0 coefficient −m·P (ERRATA §0.1: v0 ∨ v1 ∨ v2 = n − det e0).
+/// L ∨ v: normal d × P + w m, e0 coefficient −m·P (docs/conventions.md §5:
+/// v0 ∨ v1 ∨ v2 = n − det e0).
 template <class T>
 constexpr Plane<T> join(const Line<T>& l, const Point<T>& v) {
   const Vec3<T> d = l.direction(), m = l.moment(), p = v.weighted();
@@ -35,14 +37,14 @@ template <class T>
 constexpr T join(const Plane<T>& p, const Point<T>& v) {
   return p.e1 * v.e032 + p.e2 * v.e013 + p.e3 * v.e021 + p.e0 * v.e123;
 }
-/// v ∨ p = −(p ∨ v) (ERRATA §0.1).
+/// v ∨ p = −(p ∨ v) (docs/conventions.md §5).
 template <class T>
 constexpr T join(const Point<T>& v, const Plane<T>& p) {
   return -join(p, v);
 }
 
 /// v0 ∨ v1 ∨ v2: the carrier of a triangle, normal (v1 − v0) × (v2 − v0), e0 coefficient −det
-/// (paper eq. 3.12, ERRATA §0.1).
+/// (paper eq. 3.12, docs/conventions.md §5).
 template <class T>
 constexpr Plane<T> join(const Point<T>& a, const Point<T>& b, const Point<T>& c) {
   return join(join(a, b), c);
@@ -56,7 +58,7 @@ constexpr T join(const Line<T>& a, const Line<T>& b) {
   return dot(a.direction(), b.moment()) + dot(b.direction(), a.moment());
 }
 
-/// v0 ∨ v1 ∨ v2 ∨ v3 = det[v1 − v0, v2 − v0, v3 − v0] (paper eq. 3.14, ERRATA §0.1).
+/// v0 ∨ v1 ∨ v2 ∨ v3 = det[v1 − v0, v2 − v0, v3 − v0] (paper eq. 3.14, docs/conventions.md §5).
 template <class T>
 constexpr T join(const Point<T>& a, const Point<T>& b, const Point<T>& c, const Point<T>& d) {
   return join(join(a, b, c), d);

@@ -1,6 +1,6 @@
 // Motors (even elements: rotations, translations, screws) — composition, reverse, normalisation,
-// inverse, the rotor and translator constructors of ERRATA §0.1 and the sandwich X ↦ M X M̃ on
-// every grade. The kernels use the dual-quaternion form M = q + ε c of quaternion.hpp.
+// inverse, the rotor and translator constructors of docs/conventions.md §7 and the sandwich
+// X ↦ M X M̃ on every grade. The kernels use the dual-quaternion form M = q + ε c of quaternion.hpp.
 #pragma once
 
 #include <cmath>
@@ -86,7 +86,8 @@ constexpr Motor<T> inverse(const Motor<T>& m) {
 
 /// The rotor turning by +angle (radians, right-handed) about the axis through the origin with
 /// direction `axis`: R = cos(θ/2) − sin(θ/2) (a_x e23 + a_y e31 + a_z e12), a = axis/|axis|
-/// (ERRATA §0.1) = exp(−θ/2 (a_x e23 + a_y e31 + a_z e12)). A zero axis gives the identity.
+/// (docs/conventions.md §7) = exp(−θ/2 (a_x e23 + a_y e31 + a_z e12)). A zero axis gives the
+/// identity.
 template <class T>
 Motor<T> rotor(T angle, Vec3<T> axis) {
   const T len = length(axis);
@@ -95,7 +96,8 @@ Motor<T> rotor(T angle, Vec3<T> axis) {
   return {c, T(0), T(0), T(0), -s * axis.z, -s * axis.y, -s * axis.x, T(0)};
 }
 
-/// The translator by t: T = 1 − ½ (t_x e01 + t_y e02 + t_z e03) (ERRATA §0.1) = exp(−½ t·e0i).
+/// The translator by t: T = 1 − ½ (t_x e01 + t_y e02 + t_z e03) (docs/conventions.md §7)
+/// = exp(−½ t·e0i).
 template <class T>
 constexpr Motor<T> translator(Vec3<T> t) {
   return {T(1), -t.x / 2, -t.y / 2, -t.z / 2, T(0), T(0), T(0), T(0)};

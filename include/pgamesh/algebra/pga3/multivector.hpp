@@ -1,8 +1,9 @@
-// The full 16-component multivector of PGA R(3,0,1), coefficients in the ERRATA §0.1 basis order
-// 1, e0, e1, e2, e3, e01, e02, e03, e12, e31, e23, e021, e013, e032, e123, e0123. Every product is
-// read from one blade table generated at compile time from bitmask blades (e0 = bit 0, e1 = bit 1,
-// e2 = bit 2, e3 = bit 3) and the project's blade signs (e31 = −e13, e021 = −e012, e032 = −e023),
-// so the hand-specialised grade products (products.hpp, motor.hpp) can be checked against it.
+// The full 16-component multivector of PGA R(3,0,1), coefficients in the docs/conventions.md §1
+// basis order 1, e0, e1, e2, e3, e01, e02, e03, e12, e31, e23, e021, e013, e032, e123, e0123. Every
+// product is read from one blade table generated at compile time from bitmask blades (e0 = bit 0,
+// e1 = bit 1, e2 = bit 2, e3 = bit 3) and the project's blade signs (e31 = −e13, e021 = −e012,
+// e032 = −e023), so the hand-specialised grade products (products.hpp, motor.hpp) can be checked
+// against it.
 #pragma once
 
 #include <algorithm>
@@ -15,7 +16,7 @@
 
 namespace pgamesh::pga3 {
 
-/// Indices of the blades in Multivector::c (ERRATA §0.1 order).
+/// Indices of the blades in Multivector::c (docs/conventions.md §1 order).
 enum Blade : int {
   kS = 0,
   kE0,
@@ -94,7 +95,7 @@ constexpr int blade_grade(int i) {
 }
 
 /// Index and sign of the dual (e_J e_J* = e0123) and undual (e_J^(−*) e_J = e0123) of each blade
-/// (paper text above eq. 3.2, ERRATA §0.1).
+/// (paper text above eq. 3.2, docs/conventions.md §3).
 constexpr std::array<ProductEntry, 16> make_dual_table(bool undual) {
   std::array<ProductEntry, 16> t{};
   for (int i = 0; i < 16; ++i) {
@@ -109,7 +110,7 @@ inline constexpr auto kUndualTable = make_dual_table(true);
 
 }  // namespace detail
 
-/// A general element of R(3,0,1): 16 coefficients in the ERRATA §0.1 basis order.
+/// A general element of R(3,0,1): 16 coefficients in the docs/conventions.md §1 basis order.
 template <class T>
 struct Multivector {
   using scalar_type = T;
@@ -189,7 +190,8 @@ template <class T>
 constexpr Multivector<T> meet(const Multivector<T>& a, const Multivector<T>& b) {
   return outer_product(a, b);
 }
-/// The symmetric ("fat dot") inner product ⟨A_r B_s⟩_|r−s| (ERRATA §0.1, = ganja.js `|`).
+/// The symmetric ("fat dot") inner product ⟨A_r B_s⟩_|r−s| (docs/conventions.md §4, = ganja.js
+/// `|`).
 template <class T>
 constexpr Multivector<T> inner_product(const Multivector<T>& a, const Multivector<T>& b) {
   return detail::product(a, b, [](int r, int s, int k) { return k == (r > s ? r - s : s - r); });
@@ -215,7 +217,8 @@ constexpr Multivector<T> commutator(const Multivector<T>& a, const Multivector<T
   return T(0.5) * (geometric_product(a, b) - geometric_product(b, a));
 }
 
-/// The Hodge dual A* with e_J e_J* = e0123 (paper text above eq. 3.2, table in ERRATA §0.1).
+/// The Hodge dual A* with e_J e_J* = e0123 (paper text above eq. 3.2, table in docs/conventions.md
+/// §3).
 template <class T>
 constexpr Multivector<T> dual(const Multivector<T>& a) {
   Multivector<T> r;
@@ -223,7 +226,7 @@ constexpr Multivector<T> dual(const Multivector<T>& a) {
     r.c[detail::kDualTable[i].index] = T(detail::kDualTable[i].sign) * a.c[i];
   return r;
 }
-/// The undual A^(−*) with A^(−*) A = e0123 on blades, so (A*)^(−*) = A (ERRATA §0.1).
+/// The undual A^(−*) with A^(−*) A = e0123 on blades, so (A*)^(−*) = A (docs/conventions.md §3).
 template <class T>
 constexpr Multivector<T> undual(const Multivector<T>& a) {
   Multivector<T> r;
@@ -290,7 +293,7 @@ constexpr EuclideanSplit<T> euclidean_split(const Multivector<T>& a) {
   }
   return r;
 }
-/// ‖A‖: root of the sum of squares of the coefficients without e0 (ERRATA §0.1).
+/// ‖A‖: root of the sum of squares of the coefficients without e0 (docs/conventions.md §6).
 template <class T>
 T norm(const Multivector<T>& a) {
   T s{};
@@ -298,7 +301,8 @@ T norm(const Multivector<T>& a) {
     if (!(detail::kBladeMask[i] & 1u)) s += a.c[i] * a.c[i];
   return std::sqrt(s);
 }
-/// ‖A‖∞ = ‖A ∨ o‖ = ‖A*‖: root of the sum of squares of the coefficients with e0 (ERRATA §0.1).
+/// ‖A‖∞ = ‖A ∨ o‖ = ‖A*‖: root of the sum of squares of the coefficients with e0
+/// (docs/conventions.md §6).
 template <class T>
 T ideal_norm(const Multivector<T>& a) {
   T s{};

@@ -1,6 +1,7 @@
-// Norms (ERRATA §0.1, paper §3): the Euclidean norm ‖A‖ is the root of the sum of squares of the
-// coefficients without e0, the ideal norm ‖A‖∞ = ‖A ∨ o‖ = ‖A*‖ that of the coefficients with e0.
-// The Euclidean norm of a k-simplex carrier is k! × its magnitude (paper Tables 3, 4).
+// Norms (docs/conventions.md §6, paper §3): the Euclidean norm ‖A‖ is the root of the sum of
+// squares of the coefficients without e0, the ideal norm ‖A‖∞ = ‖A ∨ o‖ = ‖A*‖ that of the
+// coefficients with e0. The Euclidean norm of a k-simplex carrier is k! × its magnitude (paper
+// Tables 3, 4).
 #pragma once
 
 #include <cmath>

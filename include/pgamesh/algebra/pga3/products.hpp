@@ -21,9 +21,9 @@ constexpr Line<T> meet(const Plane<T>& a, const Plane<T>& b) {
   const Vec3<T> m = a.e0 * b.normal() - b.e0 * a.normal();
   return line_from_plucker(d, m);
 }
-/// L ∧ p (paper eq. 4.11, readable form in ERRATA §1): weighted position n × m − d l, weight
-/// n·l. A line parallel to the plane gives an ideal point (weight 0, the line's direction times
-/// −d) — never a division by zero; euclidean() of it is infinite, check weight() first.
+/// L ∧ p (paper eq. 4.11, readable form in docs/conventions.md §12): weighted position n × m − d l,
+/// weight n·l. A line parallel to the plane gives an ideal point (weight 0, the line's direction
+/// times −d) — never a division by zero; euclidean() of it is infinite, check weight() first.
 template <class T>
 constexpr Point<T> meet(const Line<T>& l, const Plane<T>& p) {
   const Vec3<T> n = p.normal(), dir = l.direction();
@@ -186,7 +186,7 @@ constexpr Motor<T> operator*(const Point<T>& a, const Point<T>& b) {
   return geometric_product(a, b);
 }
 
-// ---- dual and undual (ERRATA §0.1 table)
+// ---- dual and undual (docs/conventions.md §3 table)
 // ------------------------------------------------------------
 
 /// p*: e0 → e123, e1 → e032, e2 → e013, e3 → e021.
@@ -214,7 +214,7 @@ template <class T>
 constexpr Plane<T> undual(const Point<T>& v) {
   return {v.e123, v.e032, v.e013, v.e021};
 }
-/// L^(−*) = L* (grade 2 rows of the ERRATA table agree).
+/// L^(−*) = L* (grade 2 rows of the docs/conventions.md §3 table agree).
 template <class T>
 constexpr Line<T> undual(const Line<T>& l) {
   return dual(l);

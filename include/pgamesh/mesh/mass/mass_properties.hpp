@@ -2,8 +2,8 @@
 // inertia about the centre of mass and about the origin, products of inertia, principal moments and
 // axes with the motor of the principal frame, and the gap of an open boundary. Everything comes
 // from one pass of boundary sums (geometry/body_moments.hpp: paper Table 1, eqs. 5.3–5.6 as
-// corrected in ERRATA §0.2) accumulated about a reference point near the mesh (ERRATA §6), and the
-// rotor Jacobi of geometry/inertia_frame.hpp (eqs. 5.7–5.9).
+// corrected in docs/conventions.md §8–§10) accumulated about a reference point near the mesh
+// (docs/conventions.md §13), and the rotor Jacobi of geometry/inertia_frame.hpp (eqs. 5.7–5.9).
 //
 // Conventions (docs/mass-properties.md): faces counter-clockwise seen from outside; the volume is
 // signed (negative for an inward-oriented mesh, never abs()'d); inertia is the tensor
@@ -35,7 +35,7 @@ struct MassOptions {
 };
 
 // Products of inertia ∫ x y dm, ∫ y z dm, ∫ z x dm (about the same point as the tensor they come
-// from): the tensor's off-diagonal entries with the sign flipped (ERRATA §0.2).
+// from): the tensor's off-diagonal entries with the sign flipped (docs/conventions.md §10).
 struct ProductsOfInertia {
   double xy = 0, yz = 0, zx = 0;
 };

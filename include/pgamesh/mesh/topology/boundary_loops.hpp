@@ -22,7 +22,7 @@ struct BoundaryLoop {
   bool closed = true;   // ends where it starts; false for an open chain, which only happens where
                         // orientation is inconsistent (boundary in- and out-degrees differ)
   Vec3d vector_area{};  // ½ Σ a × b (edge-carrier moments), ‖·‖ = area for a planar rim
-  double area = 0;      // ‖vector_area‖ = ½ ‖Σ E_i‖∞ (ERRATA §1)
+  double area = 0;      // ‖vector_area‖ = ½ ‖Σ E_i‖∞ (docs/conventions.md §6)
   double perimeter = 0;
 };
 

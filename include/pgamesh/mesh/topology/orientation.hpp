@@ -1,5 +1,5 @@
 // Repairing face orientation: make every face agree with its neighbours, then turn each closed
-// component outward (positive signed volume, ERRATA §0.2).
+// component outward (positive signed volume, docs/conventions.md §8).
 #pragma once
 
 #include <cstddef>

@@ -66,7 +66,8 @@ struct TopologyReport {
   bool closed = false;  // every edge used by exactly two faces in opposite directions
   bool orientation_consistent = true;  // no inconsistent edge
 
-  // Measures (doubles, accumulated about `reference_point`, mesh/reference_point.hpp: ERRATA §6).
+  // Measures (doubles, accumulated about `reference_point`, mesh/reference_point.hpp:
+  // docs/conventions.md §13).
   Vec3d reference_point{};
   double area = 0;
   double volume = 0;                  // signed volume about reference_point (the volume if closed)

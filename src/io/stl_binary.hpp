@@ -11,7 +11,7 @@
 #include <span>
 #include <string>
 
-#include "pgamesh/algebra/double4.hpp"
+#include "detail/simd/double4.hpp"
 #include "pgamesh/core/vec3.hpp"
 
 namespace pgamesh {

@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
+#include "io/stl_binary.hpp"
 #include "pgamesh/core/mesh.hpp"
 #include "pgamesh/core/vec3.hpp"
-#include "pgamesh/io/stl_binary.hpp"
 #include "pgamesh/mesh/mass/mass_properties.hpp"
 
 namespace pgamesh {

@@ -2,8 +2,8 @@
 // size (independent of the thread count). Within a chunk, face i goes to lane i mod 4, each lane
 // summed on its own in face order; the chunk's sum is (lane 0 + lane 1) + (lane 2 + lane 3), and
 // the chunk sums are added in chunk order. The result is therefore the same bit for bit with 1, 2
-// or 64 threads (DESIGN.md §4: results do not depend on the thread count), and the same whether
-// the lanes are summed one face at a time or four at once (Double4, algebra/double4.hpp).
+// or 64 threads (docs/conventions.md §13: results do not depend on the thread count), and the same
+// whether the lanes are summed one face at a time or four at once (Double4, algebra/double4.hpp).
 #pragma once
 
 #include <algorithm>
@@ -13,6 +13,7 @@
 #include <thread>
 #include <vector>
 
+#include "detail/simd/double4.hpp"
 #include "pgamesh/geometry/body_moments.hpp"
 
 namespace pgamesh {
@@ -43,6 +44,18 @@ struct LanedSums {
     return low;
   }
 };
+
+// Lane j of sums of four faces side by side: the sums, in double, of the faces of lane j.
+inline BoundarySums lane(const BasicBoundarySums<Double4>& s, int j) {
+  BoundarySums out;
+  out.area2 = s.area2.lane(j);
+  out.carrier_sum = {s.carrier_sum.e0.lane(j), s.carrier_sum.e1.lane(j), s.carrier_sum.e2.lane(j),
+                     s.carrier_sum.e3.lane(j)};
+  out.volume6 = s.volume6.lane(j);
+  out.moment24 = {s.moment24.x.lane(j), s.moment24.y.lane(j), s.moment24.z.lane(j)};
+  for (int i = 0; i < 6; ++i) out.second120[i] = s.second120[i].lane(j);
+  return out;
+}
 
 // Sets the lanes of a chunk to the sums of its first faces summed four at a time (lane j of `four`
 // holding faces j, j + 4, …), before its last few faces are added one by one.

@@ -6,9 +6,9 @@
 // third vertex) — keeping only the defective edges and the boundary sides.
 #pragma once
 
+#include "mesh/weld/welded_triangles.hpp"
 #include "pgamesh/core/vec3.hpp"
 #include "pgamesh/mesh/topology/topology.hpp"
-#include "pgamesh/mesh/weld/welded_triangles.hpp"
 
 namespace pgamesh {
 

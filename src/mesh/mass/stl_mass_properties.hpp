@@ -1,13 +1,13 @@
 // The fused fast path for binary STL: mass properties accumulated straight from the mapped
-// float32 records on every core, without building a Mesh (DESIGN.md §6: parse and accumulate in one
-// streaming pass). No topology: an STL has no shared vertices until they are welded, so
-// closedness needs the weld of mesh/topology.
+// float32 records on every core, without building a Mesh (docs/formats.md, Speed: parse and
+// accumulate in one streaming pass). No topology: an STL has no shared vertices until they are
+// welded, so closedness needs the weld of mesh/topology.
 #pragma once
 
 #include <string>
 
+#include "io/stl_binary.hpp"
 #include "pgamesh/core/bounding_box.hpp"
-#include "pgamesh/io/stl_binary.hpp"
 #include "pgamesh/mesh/mass/mass_properties.hpp"
 
 namespace pgamesh {

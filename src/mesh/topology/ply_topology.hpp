@@ -12,10 +12,10 @@
 #include <span>
 #include <string>
 
+#include "mesh/topology/triangle_topology.hpp"
 #include "pgamesh/core/mesh.hpp"
 #include "pgamesh/mesh/mass/mass_properties.hpp"
 #include "pgamesh/mesh/topology/topology.hpp"
-#include "pgamesh/mesh/topology/triangle_topology.hpp"
 
 namespace pgamesh {
 
