@@ -23,34 +23,6 @@ namespace pgamesh::cli {
 
 namespace {
 
-bool ends_with_ci(std::string_view s, std::string_view suffix) {
-  if (s.size() < suffix.size()) return false;
-  for (std::size_t i = 0; i < suffix.size(); ++i) {
-    char c = s[s.size() - suffix.size() + i];
-    if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
-    if (c != suffix[i]) return false;
-  }
-  return true;
-}
-
-// The format to write OUT in: the input's own encoding when OUT has the same family, else the
-// binary (or only) encoding of the extension's family.
-MeshFormat output_format(std::string_view path, MeshFormat input) {
-  auto same_family = [&](MeshFormat a, MeshFormat b) { return a == input || b == input; };
-  if (ends_with_ci(path, ".stl"))
-    return same_family(MeshFormat::stl_ascii, MeshFormat::stl_binary) ? input
-                                                                      : MeshFormat::stl_binary;
-  if (ends_with_ci(path, ".ply")) {
-    if (input == MeshFormat::ply_ascii || input == MeshFormat::ply_binary_le ||
-        input == MeshFormat::ply_binary_be)
-      return input;
-    return MeshFormat::ply_binary_le;
-  }
-  if (ends_with_ci(path, ".obj")) return MeshFormat::obj;
-  if (ends_with_ci(path, ".off")) return MeshFormat::off;
-  return MeshFormat::unknown;
-}
-
 const char* yes_no(bool b) {
   return b ? "yes" : "no";
 }
@@ -186,7 +158,7 @@ int run_check(const CheckOptions& o) {
     analysis_options.topology_options = options;
     const Analysis analysis = analyze_mesh(mesh, source, analysis_options);
     if (!output.empty()) {
-      const MeshFormat format = output_format(output, source.format);
+      const MeshFormat format = format_for_extension(output, source.format);
       if (format == MeshFormat::unknown) {
         std::fprintf(stderr,
                      "pgamesh check: cannot tell the format of '%s' (use .stl, .obj, .ply or "

@@ -221,7 +221,7 @@ describe('viewer page', () => {
       await settled(page);
       if (await page.evaluate(() => window.pgameshViewer.info.features.fuel)) {
         const status = await page.textContent('#fuel-status');
-        assert.match(status, /open-tetra\.obj: the mesh is open/);
+        assert.match(status, /open-tetra\.obj: not a closed, outward-oriented tank; open: 3 boundary edges/);
         assert.equal(await page.getAttribute('#fuel-status', 'class'), 'status problem');
       }
       assert.ok(near(await figure(page, 'props-gap-area'), Math.sqrt(3) / 2, 1, 1e-12));

@@ -21,6 +21,7 @@
 #include "mesh_store.hpp"
 #include "mesh_view.hpp"
 #include "pgamesh/core/input_error.hpp"
+#include "pgamesh/io/mesh_format.hpp"
 #include "pgamesh/mesh/mass/mass_properties.hpp"
 #include "pgamesh/mesh/topology/topology.hpp"
 #include "props_report.hpp"
@@ -47,20 +48,13 @@ std::string allowed_method(const AssetTable& assets, const std::string& path) {
   return {};
 }
 
-bool has_mesh_extension(const std::filesystem::path& p) {
-  std::string ext = p.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext == ".stl" || ext == ".obj" || ext == ".ply" || ext == ".off";
-}
-
 // The bundled meshes: every mesh file directly in the folder, sorted by name.
 std::vector<std::filesystem::path> bundled_meshes(const std::string& dir) {
   std::vector<std::filesystem::path> out;
   std::error_code ec;
   if (dir.empty() || !std::filesystem::is_directory(dir, ec)) return out;
   for (const auto& e : std::filesystem::directory_iterator(dir, ec))
-    if (e.is_regular_file(ec) && has_mesh_extension(e.path())) out.push_back(e.path());
+    if (e.is_regular_file(ec) && has_mesh_extension(e.path().string())) out.push_back(e.path());
   std::sort(out.begin(), out.end());
   return out;
 }
