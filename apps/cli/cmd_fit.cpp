@@ -65,10 +65,7 @@ int run_fit(const FitOptions& o) {
     max_error = f.max_error;
   } else {
     doc["shape"] = "quadric";
-    std::vector<Vec3d> pts;
-    pts.reserve(points.size());
-    for (const Vec3d& p : points) pts.push_back({p.x, p.y, p.z});
-    const quadric::FitResult f = quadric::fit(pts);
+    const quadric::FitResult f = quadric::fit(points);
     Json k = Json::array();
     std::string text;
     for (double c : f.quadric.k) {

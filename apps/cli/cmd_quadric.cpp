@@ -30,12 +30,6 @@ struct QuadricOptions {
   bool json = false;
 };
 
-Vec3d v3(const Vec3d& v) {
-  return {v.x, v.y, v.z};
-}
-Vec3d vd(const Vec3d& v) {
-  return {v[0], v[1], v[2]};
-}
 Json numbers(std::span<const double> v) {
   Json a = Json::array();
   for (double x : v) a.push_back(json_number(x));
@@ -127,9 +121,7 @@ int run_quadric(const QuadricOptions& o) {
     text += buf + value + "\n";
   };
   if (!through.empty()) {
-    std::vector<Vec3d> pts;
-    for (const Vec3d& p : through) pts.push_back(v3(p));
-    const quadric::FitResult f = quadric::fit(pts);
+    const quadric::FitResult f = quadric::fit(through);
     m.q = f.quadric;
     doc["coefficients"] = numbers(m.q.k);
     doc["fit"] = {{"points", through.size()},
@@ -160,19 +152,18 @@ int run_quadric(const QuadricOptions& o) {
 
   if (!points.empty()) {
     Json list = Json::array();
-    for (const Vec3d& pd : points) {
-      const Vec3d p = v3(pd);
+    for (const Vec3d& p : points) {
       if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
-        throw ModelError("--point " + vec_text(pd) + ": the coordinates are not finite");
+        throw ModelError("--point " + vec_text(p) + ": the coordinates are not finite");
       const double f = m.value(p);
       const Vec3d g = m.gradient(p);
       const auto plane = quadric::tangent_plane(m.q, p);
-      list.push_back({{"point", json_vec3(pd)},
+      list.push_back({{"point", json_vec3(p)},
                       {"value", json_number(f)},
-                      {"gradient", json_vec3(vd(g))},
+                      {"gradient", json_vec3(g)},
                       {"tangent_plane", numbers(plane)}});
-      line("point " + vec_text(pd), "value " + format_number(f) + ", gradient " + vec_text(vd(g)) +
-                                        ", tangent plane " + numbers_text(plane));
+      line("point " + vec_text(p), "value " + format_number(f) + ", gradient " + vec_text(g) +
+                                       ", tangent plane " + numbers_text(plane));
     }
     doc["points"] = list;
   }
@@ -187,16 +178,16 @@ int run_quadric(const QuadricOptions& o) {
       std::string where;
       for (int k = 0; k < hit.count; ++k) {
         t.push_back(json_number(hit.t[static_cast<std::size_t>(k)]));
-        pts.push_back(json_vec3(vd(hit.points[static_cast<std::size_t>(k)])));
-        where += " " + vec_text(vd(hit.points[static_cast<std::size_t>(k)]));
+        pts.push_back(json_vec3(hit.points[static_cast<std::size_t>(k)]));
+        where += " " + vec_text(hit.points[static_cast<std::size_t>(k)]);
       }
       const std::string kind(quadric::to_string(hit.kind));
-      list.push_back({{"origin", json_vec3(vd(origin))},
-                      {"direction", json_vec3(vd(direction))},
+      list.push_back({{"origin", json_vec3(origin)},
+                      {"direction", json_vec3(direction)},
                       {"kind", kind},
                       {"t", t},
                       {"points", pts}});
-      line("line " + vec_text(vd(origin)) + " + t " + vec_text(vd(direction)), kind + where);
+      line("line " + vec_text(origin) + " + t " + vec_text(direction), kind + where);
     }
     doc["lines"] = list;
   }

@@ -8,13 +8,15 @@
 #include <vector>
 
 #include "pgamesh/models/cga.hpp"
+#include "support/model_checks.hpp"
 
 using namespace pgamesh;
 using namespace pgamesh::cga;
 
-namespace {
+using pgamesh::test::expect_near;
+using pgamesh::test::pi;
 
-constexpr double pi = 3.14159265358979323846;
+namespace {
 
 std::vector<Vec3d> noisy_sphere(Vec3d c, double r, std::size_t n, double noise, unsigned seed,
                                 double max_polar = pi) {
@@ -31,28 +33,6 @@ std::vector<Vec3d> noisy_sphere(Vec3d c, double r, std::size_t n, double noise, 
   }
   return out;
 }
-
-void expect_near(Vec3d a, Vec3d b, double tol) {
-  EXPECT_NEAR(a.x, b.x, tol);
-  EXPECT_NEAR(a.y, b.y, tol);
-  EXPECT_NEAR(a.z, b.z, tol);
-}
-
-template <class F>
-std::string error_of(F&& f) {
-  try {
-    f();
-  } catch (const ModelError& e) {
-    return e.what();
-  }
-  return "no ModelError";
-}
-
-#define EXPECT_MODEL_ERROR(stmt, text)                                    \
-  do {                                                                    \
-    const std::string msg_ = error_of([&] { (void)(stmt); });             \
-    EXPECT_NE(msg_.find(text), std::string::npos) << "message: " << msg_; \
-  } while (0)
 
 }  // namespace
 

@@ -10,38 +10,15 @@
 
 #include "pgamesh/algebra/clifford.hpp"
 #include "pgamesh/models/cga.hpp"
+#include "support/model_checks.hpp"
 
 using namespace pgamesh;
 using namespace pgamesh::cga;
 
+using pgamesh::test::expect_near;
+using pgamesh::test::pi;
+
 namespace {
-
-constexpr double pi = 3.14159265358979323846;
-
-void expect_near(Vec3d a, Vec3d b, double tol) {
-  EXPECT_NEAR(a.x, b.x, tol);
-  EXPECT_NEAR(a.y, b.y, tol);
-  EXPECT_NEAR(a.z, b.z, tol);
-}
-
-// The message of the ModelError that f throws (fails when it throws nothing or something else).
-template <class F>
-std::string error_of(F&& f) {
-  try {
-    f();
-  } catch (const ModelError& e) {
-    return e.what();
-  } catch (const std::exception& e) {
-    return std::string("wrong exception type: ") + e.what();
-  }
-  return "no exception";
-}
-
-#define EXPECT_MODEL_ERROR(stmt, text)                                    \
-  do {                                                                    \
-    const std::string msg_ = error_of([&] { (void)(stmt); });             \
-    EXPECT_NE(msg_.find(text), std::string::npos) << "message: " << msg_; \
-  } while (0)
 
 Vec3d on_sphere(Vec3d c, double r, double theta, double phi) {
   return c + r * Vec3d{std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi),
