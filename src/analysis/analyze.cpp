@@ -43,10 +43,6 @@ void judge(Analysis& r) {
     r.reasons.push_back("topology not computed (--no-topology): closedness unknown");
 }
 
-}  // namespace
-
-namespace {
-
 // The report without the topology: mass properties, the reader's and their warnings.
 Analysis mass_report(MassProperties mass, const MeshSource& source,
                      const AnalysisOptions& options) {
@@ -72,9 +68,8 @@ Analysis mass_report(const Mesh& mesh, const MeshSource& source, const AnalysisO
 // blank file (read_mesh_bytes() reports it) or a file whose faces come before its vertices (the
 // reader declines it before reading any data; the Mesh path below reads it).
 std::optional<Analysis> summed_ply_report(std::span<const char> bytes, const std::string& name,
-                                          const AnalysisOptions& options, bool release_pages) {
-  const MeshFormat format =
-      options.format == MeshFormat::unknown ? detect_format(bytes) : options.format;
+                                          MeshFormat format, const AnalysisOptions& options,
+                                          bool release_pages) {
   if (options.topology ||
       (format != MeshFormat::ply_ascii && format != MeshFormat::ply_binary_le &&
        format != MeshFormat::ply_binary_be) ||
@@ -99,9 +94,8 @@ std::optional<Analysis> summed_ply_report(std::span<const char> bytes, const std
 // file rather than stored (ply_topology.hpp), or nullopt for a file that pass declines or finds
 // fault with: the careful reader then reads it again and reports exactly what it reports.
 std::optional<Analysis> ply_topology_report(std::span<const char> bytes, const std::string& name,
-                                            const AnalysisOptions& options, bool release_pages) {
-  const MeshFormat format =
-      options.format == MeshFormat::unknown ? detect_format(bytes) : options.format;
+                                            MeshFormat format, const AnalysisOptions& options,
+                                            bool release_pages) {
   if (!options.topology || options.topology_options.weld_tolerance != 0 ||
       (format != MeshFormat::ply_binary_le && format != MeshFormat::ply_binary_be))
     return std::nullopt;
@@ -141,6 +135,9 @@ namespace {
 Analysis analyze(std::span<const char> bytes, const std::string& name,
                  const AnalysisOptions& options, int file) {
   const bool release_records = file >= 0;
+  // The format by content, looked at once; a forced format picks the reader family.
+  const MeshFormat detected = detect_format(bytes);
+  const MeshFormat format = options.format == MeshFormat::unknown ? detected : options.format;
   const bool stl_allowed = options.format == MeshFormat::unknown ||
                            options.format == MeshFormat::stl_binary ||
                            options.format == MeshFormat::stl_ascii;
@@ -172,7 +169,7 @@ Analysis analyze(std::span<const char> bytes, const std::string& name,
     // ASCII STL without topology: the reader's grammar hands the facets to a summing consumer
     // instead of a Mesh, on every core (stl_ascii_sums.hpp): the figures, warnings and errors of
     // the mesh path below, bit for bit.
-    if (!options.topology && detect_format(bytes) == MeshFormat::stl_ascii) {
+    if (!options.topology && detected == MeshFormat::stl_ascii) {
       MeshSource source;
       source.path = name;
       MassProperties mass =
@@ -183,8 +180,10 @@ Analysis analyze(std::span<const char> bytes, const std::string& name,
       return r;
     }
   }
-  if (auto r = summed_ply_report(bytes, name, options, release_records)) return std::move(*r);
-  if (auto r = ply_topology_report(bytes, name, options, release_records)) return std::move(*r);
+  if (auto r = summed_ply_report(bytes, name, format, options, release_records))
+    return std::move(*r);
+  if (auto r = ply_topology_report(bytes, name, format, options, release_records))
+    return std::move(*r);
   // The careful readers, releasing the file's pages as they parse (release_records); the mesh is
   // then handed to the topology pass, which frees it once welded (topology.hpp).
   MeshSource source;
