@@ -1,17 +1,16 @@
 #include "fuel_json.hpp"
 
 #include <cmath>
-#include <cstdio>
+
+#include "pgamesh/core/number_text.hpp"
 
 namespace pgamesh::cli {
 
 namespace {
 
+// A CSV cell: the number as format_number prints it, empty when it is not finite.
 std::string num(double v) {
-  if (!std::isfinite(v)) return "";
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
+  return std::isfinite(v) ? format_number(v) : std::string();
 }
 
 }  // namespace
