@@ -1,6 +1,7 @@
 // Conformal geometric algebra CGA R(4,1) for Euclidean objects (Hitzer, "Euclidean Geometric
 // Objects in the Clifford Geometric Algebra of {Origin, 3-Space, Infinity}"): every formula, its
-// equation and the corrections it relies on are in docs/models-cga.md.
+// equation and the corrections it relies on are in docs/models-cga.md; the conventions (the null
+// basis, e_o·e_∞ = −1, Hitzer's eq. 9 sign) are docs/conventions.md §15.
 //
 //   cga_algebra.hpp  the null basis e_o, e1, e2, e3, e_∞, products, metric dual, blade keys
 //   cga_point.hpp    up, down, weight, normalisation

@@ -4,6 +4,9 @@
 // gives every formula and the paper's equation (Breuils et al., "Efficient representation and
 // manipulation of quadratic surfaces using Geometric Algebras").
 //
+// The conventions of the three models (the corrected DPGA rotor, the e/f order of the paper) are
+// docs/conventions.md §16.
+//
 // Coefficient order (every model and file, docs/models-quadrics.md §1):
 //   F(x,y,z) = a x² + b y² + c z² + d xy + e xz + f yz + g x + h y + i z + j
 // i.e. e is the xz and f the yz coefficient (the paper prints both e yz + f zx and e xz + f yz;

@@ -83,8 +83,9 @@ MassProperties ascii_stl_mass_properties(std::span<const char> bytes, const std:
   const detail::StlAsciiState state = detail::joined_state(pieces);
   detail::add_stl_ascii_warnings(state, bytes.data(), name, source.warnings);
 
-  // reference_point() of the mesh: the centre of the bounding box of every vertex (the boxes of
-  // the pieces joined in file order keep the box's choice between +0 and −0).
+  // reference_point() of the mesh (docs/conventions.md §13): the centre of the bounding box of
+  // every vertex (the boxes of the pieces joined in file order keep the box's choice between +0
+  // and −0).
   Box3 box;
   std::vector<std::size_t> first_face;  // of each piece, in the file's face numbering
   std::size_t faces = 0;
@@ -94,7 +95,8 @@ MassProperties ascii_stl_mass_properties(std::span<const char> bytes, const std:
     faces += p.out.faces();
   }
   const Vec3d reference = box.centre();
-  // mesh_boundary_sums: the same faces in the same chunks and lanes.
+  // mesh_boundary_sums: the same faces in the same chunks and lanes, so the same bits
+  // (docs/conventions.md §13, deterministic reduction order).
   const BoundarySums sums =
       chunked_sums(faces, options.threads, [&](LanedSums<>& s, std::size_t begin, std::size_t end) {
         auto k = static_cast<std::size_t>(
