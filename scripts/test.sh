@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Quick start, command 2: install what is needed and run every test. The tests are compiled once,
-# under AddressSanitizer + UndefinedBehaviorSanitizer (warnings as errors), and run there; the
-# release build makes only the programs the CLI-level stages use (the installed package, the
-# viewer's server for the browser tests). Then the libFuzzer harnesses replay their corpus and run
-# for a bounded time. Stage times: docs/testing.md.
+# with clang under AddressSanitizer + UndefinedBehaviorSanitizer (warnings as errors, unity build),
+# and run there; the same build makes the libFuzzer harnesses, which replay their corpus and run for
+# a bounded time. The release build (GCC, warnings as errors) makes only the programs the
+# CLI-level stages use (the installed package, the viewer's server for the browser tests).
+# Stage times: docs/testing.md.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 jobs=$(nproc)
@@ -35,18 +36,13 @@ if [ -x build/release/pgamesh-serve ]; then
   PGAMESH_CLI=build/release/pgamesh timeout --kill-after=10 300 node --test tests/viewer/
 fi
 
-stage "AddressSanitizer + UndefinedBehaviorSanitizer build (library, CLI, tests)"
+stage "AddressSanitizer + UndefinedBehaviorSanitizer build (library, CLI, tests, fuzz harnesses)"
 cmake --preset sanitize > /dev/null
 cmake --build --preset sanitize -j "$jobs"
 stage "AddressSanitizer + UndefinedBehaviorSanitizer tests"
 ctest --preset sanitize -j "$jobs"
 
-if compgen -G "fuzz/fuzz_*.cpp" > /dev/null; then
-  stage "libFuzzer harnesses build"
-  cmake --preset fuzz > /dev/null
-  cmake --build --preset fuzz -j "$jobs"
-  stage "libFuzzer: corpus replay, then ${PGAMESH_FUZZ_SECONDS:-10} s per harness"
-  scripts/fuzz.sh "${PGAMESH_FUZZ_SECONDS:-10}"
-fi
+stage "libFuzzer: corpus replay, then ${PGAMESH_FUZZ_SECONDS:-10} s per harness, $jobs at a time"
+scripts/fuzz.sh "${PGAMESH_FUZZ_SECONDS:-10}"
 stage ""
 echo "== all stages: $SECONDS s"

@@ -42,10 +42,6 @@ std::optional<CalcAlgebra> calc_algebra(std::string_view name) {
 
 namespace {
 
-[[noreturn]] void fail(std::size_t column, std::string message) {
-  throw CalcFailure{column, std::move(message)};
-}
-
 // Runs f, reporting any exception of the engine or the models layer at `column`.
 template <class F>
 Multivector at_column(std::size_t column, F f) {
@@ -54,7 +50,7 @@ Multivector at_column(std::size_t column, F f) {
   } catch (const CalcFailure&) {
     throw;
   } catch (const std::exception& e) {
-    fail(column, e.what());
+    fail_at(column, e.what());
   }
 }
 
@@ -88,7 +84,7 @@ Multivector Calculator::eval(const Expr& e, std::size_t depth) const {
       }
     }
   }
-  fail(e.column, "internal error: unknown expression");
+  fail_at(e.column, "internal error: unknown expression");
 }
 
 Multivector Calculator::eval_chain(const Expr& e, std::size_t depth) const {
@@ -109,7 +105,7 @@ Multivector Calculator::eval_chain(const Expr& e, std::size_t depth) const {
         break;
       case '/':
         if (is_scalar(r)) {
-          if (r[0] == 0) fail(e.args[k + 1].column, "division by zero");
+          if (r[0] == 0) fail_at(e.args[k + 1].column, "division by zero");
           v = v / r[0];
         } else {
           v = clifford::geometric(a, v, at_column(col, [&] { return clifford::inverse(a, r); }));
@@ -125,7 +121,7 @@ Multivector Calculator::eval_chain(const Expr& e, std::size_t depth) const {
         v = clifford::inner(a, v, r);
         break;
       default:
-        fail(col, "internal error: unknown operator");
+        fail_at(col, "internal error: unknown operator");
     }
   }
   return v;
@@ -138,13 +134,13 @@ Multivector Calculator::eval_name(const Expr& e) const {
   if (auto it = names_.find(n); it != names_.end()) return it->second;
   if (auto b = alg_.algebra.parse_blade(n)) return clifford::basis_blade(b->first, b->second);
   if (!find_functions(n).empty())
-    fail(e.column, "function '" + n + "' needs its arguments in parentheses");
-  fail(e.column, "unknown blade '" + n + "' in algebra " + alg_.name);
+    fail_at(e.column, "function '" + n + "' needs its arguments in parentheses");
+  fail_at(e.column, "unknown blade '" + n + "' in algebra " + alg_.name);
 }
 
 Multivector Calculator::eval_call(const Expr& e, std::size_t depth) const {
   const std::vector<const FunctionInfo*> candidates = find_functions(e.text);
-  if (candidates.empty()) fail(e.column, "unknown function '" + e.text + "'");
+  if (candidates.empty()) fail_at(e.column, "unknown function '" + e.text + "'");
   const FunctionInfo* f = nullptr;
   for (const FunctionInfo* c : candidates)
     if (c->models & model_bit(alg_.model)) f = c;
@@ -159,17 +155,17 @@ Multivector Calculator::eval_call(const Expr& e, std::size_t depth) const {
           where += names[static_cast<int>(m)];
         }
     }
-    fail(e.column,
-         e.text + "() is not defined in algebra " + alg_.name + " (it is for " + where + ")");
+    fail_at(e.column,
+            e.text + "() is not defined in algebra " + alg_.name + " (it is for " + where + ")");
   }
   const int n = static_cast<int>(e.args.size());
   if (n < f->min_args || n > f->max_args) {
     std::string count = std::to_string(f->min_args);
     if (f->max_args != f->min_args)
       count += f->max_args > 1000 ? " or more" : " to " + std::to_string(f->max_args);
-    fail(e.column, e.text + "() takes " + count + " argument" +
-                       (f->min_args == 1 && f->max_args == 1 ? "" : "s") + ", got " +
-                       std::to_string(n) + ": " + std::string(f->signature));
+    fail_at(e.column, e.text + "() takes " + count + " argument" +
+                          (f->min_args == 1 && f->max_args == 1 ? "" : "s") + ", got " +
+                          std::to_string(n) + ": " + std::string(f->signature));
   }
   std::vector<Multivector> values;
   std::vector<std::size_t> columns;
@@ -187,7 +183,7 @@ CalcResult Calculator::run(std::string_view statement) {
     const ParsedStatement s = parse_statement(statement);
     if (!s.let_name.empty()) {
       if (alg_.algebra.parse_blade(s.let_name) || is_reserved_name(s.let_name))
-        fail(s.let_column, "'" + s.let_name + "' is a blade, constant or function name");
+        fail_at(s.let_column, "'" + s.let_name + "' is a blade, constant or function name");
       names_[s.let_name] = eval(s.expr);
       return {};
     }

@@ -20,10 +20,6 @@ bool is_ident(char c) {
   return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_';
 }
 
-[[noreturn]] void fail(std::size_t column, std::string message) {
-  throw CalcFailure{column, std::move(message)};
-}
-
 // A number starting at s[i]: digits, an optional fraction and an exponent (only when digits
 // follow the 'e'). "2e12" is refused as ambiguous: 2·e12 or 2·10¹²?
 Token number_token(std::string_view s, std::size_t i) {
@@ -37,8 +33,8 @@ Token number_token(std::string_view s, std::size_t i) {
   if (j < s.size() && (s[j] == 'e' || s[j] == 'E')) {
     std::size_t k = j + 1;
     if (s[j] == 'e' && k < s.size() && is_digit(s[k]))
-      fail(col, "ambiguous '" + std::string(s.substr(i, k + 1 - i)) +
-                    "...': write 2*e12 for a blade, 2E12 or 2e+12 for a power of ten");
+      fail_at(col, "ambiguous '" + std::string(s.substr(i, k + 1 - i)) +
+                       "...': write 2*e12 for a blade, 2E12 or 2e+12 for a power of ten");
     if (k < s.size() && (s[k] == '+' || s[k] == '-')) ++k;
     if (k < s.size() && is_digit(s[k])) {
       while (k < s.size() && is_digit(s[k])) ++k;
@@ -49,9 +45,9 @@ Token number_token(std::string_view s, std::size_t i) {
   double v = 0;
   const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
   if (ec != std::errc() || ptr != text.data() + text.size() || !std::isfinite(v))
-    fail(col, "number '" + text + "' out of range");
+    fail_at(col, "number '" + text + "' out of range");
   if (j < s.size() && is_ident(s[j]))
-    fail(j + 1, "a number must be followed by an operator (write 2*e12, not 2e12)");
+    fail_at(j + 1, "a number must be followed by an operator (write 2*e12, not 2e12)");
   return {Tok::number, col, text, v};
 }
 
@@ -61,7 +57,7 @@ class Parser {
 
   Expr expression_to_end() {
     Expr e = sum();
-    if (peek().kind != Tok::end) fail(peek().column, "unexpected '" + peek().text + "'");
+    if (peek().kind != Tok::end) fail_at(peek().column, "unexpected '" + peek().text + "'");
     return e;
   }
 
@@ -99,7 +95,7 @@ class Parser {
 
   // unary := ('-' | '+' | '~' | '!') unary | primary
   Expr unary() {
-    if (++depth_ > calc_max_depth) fail(peek().column, "expression nested too deeply");
+    if (++depth_ > calc_max_depth) fail_at(peek().column, "expression nested too deeply");
     Expr e;
     if (peek_op("-+~!")) {
       const Token& op = next();
@@ -126,7 +122,7 @@ class Parser {
         return e;
       case Tok::lparen: {
         e = sum();
-        if (peek().kind != Tok::rparen) fail(peek().column, "expected ')'");
+        if (peek().kind != Tok::rparen) fail_at(peek().column, "expected ')'");
         next();
         e.column = t.column;  // errors about the group point at its '('
         return e;
@@ -146,13 +142,13 @@ class Parser {
             next();
           }
         }
-        if (peek().kind != Tok::rparen) fail(peek().column, "expected ')' or ','");
+        if (peek().kind != Tok::rparen) fail_at(peek().column, "expected ')' or ','");
         next();
         return e;
       case Tok::end:
-        fail(t.column, "unexpected end of expression");
+        fail_at(t.column, "unexpected end of expression");
       default:
-        fail(t.column, "unexpected '" + t.text + "'");
+        fail_at(t.column, "unexpected '" + t.text + "'");
     }
   }
 
@@ -190,7 +186,7 @@ std::vector<Token> tokenize(std::string_view s) {
       out.push_back({kind, col, std::string(1, c)});
       ++i;
     } else {
-      fail(col, std::string("unexpected character '") + c + "'");
+      fail_at(col, std::string("unexpected character '") + c + "'");
     }
   }
   out.push_back({Tok::end, s.size() + 1, ""});
@@ -201,9 +197,9 @@ ParsedStatement parse_statement(std::string_view statement) {
   std::vector<Token> toks = tokenize(statement);
   ParsedStatement out;
   if (toks.size() >= 2 && toks[0].kind == Tok::ident && toks[0].text == "let") {
-    if (toks[1].kind != Tok::ident) fail(toks[1].column, "expected a name after 'let'");
+    if (toks[1].kind != Tok::ident) fail_at(toks[1].column, "expected a name after 'let'");
     if (toks[2].kind != Tok::equals)
-      fail(toks[2].column, "expected '=' after 'let " + toks[1].text + "'");
+      fail_at(toks[2].column, "expected '=' after 'let " + toks[1].text + "'");
     out.let_name = toks[1].text;
     out.let_column = toks[1].column;
     toks.erase(toks.begin(), toks.begin() + 3);

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace pgamesh::cli {
@@ -15,6 +16,10 @@ struct CalcFailure {
   std::size_t column = 0;
   std::string message;
 };
+
+[[noreturn]] inline void fail_at(std::size_t column, std::string message) {
+  throw CalcFailure{column, std::move(message)};
+}
 
 // Nesting deeper than this (parentheses, unary operators, calls) is refused.
 inline constexpr std::size_t calc_max_depth = 200;

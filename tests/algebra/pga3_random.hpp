@@ -98,4 +98,16 @@ pga3::Multivector<T> pseudoscalar_mv(const T& s) {
   return m;
 }
 
+// Allowed error of the float and double typed tests after a handful of products.
+template <class T>
+T tol() {
+  return std::is_same_v<T, float> ? T(5e-5) : T(1e-12);
+}
+
+// A random vector of size about `scale` (the moment of a random line).
+template <class T>
+Vec3<T> rvec(std::mt19937& r, T scale = T(2)) {
+  return scale * random_line<T>(r).moment();
+}
+
 }  // namespace pgamesh::test

@@ -1,15 +1,26 @@
-// Shared by the pgad motor tests: the general engine's exp and log in R(d,0,1), which route to
-// pgad's closed forms, against pgad itself.
+// Shared by the pgad tests: the largest coefficient difference, and the general engine's exp and
+// log in R(d,0,1), which route to pgad's closed forms, against pgad itself.
 #pragma once
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
 #include <vector>
 
 #include "pgamesh/algebra/clifford.hpp"
 #include "pgamesh/algebra/pgad.hpp"
 
 namespace pgamesh::test {
+
+// max |a_i − b_i| over the 2^(D+1) coefficients.
+template <int D>
+double max_diff(const pgad::Multivector<D>& a, const pgad::Multivector<D>& b) {
+  double m = 0;
+  for (std::size_t i = 0; i < a.size; ++i) m = std::max(m, std::abs(a.c[i] - b.c[i]));
+  return m;
+}
 
 // clifford::exp(b) against pgad::exp(b) to 1e-12, and clifford::log of that motor against b to
 // `log_tolerance`, coefficient by coefficient; `alg` is R(D,0,1).

@@ -5,7 +5,7 @@
 
 #include "test_clifford_util.hpp"
 
-using namespace pgamesh::clifford;
+namespace pgamesh::clifford {
 using pgamesh::test::from_golden;
 using pgamesh::test::json;
 using pgamesh::test::near_golden;
@@ -188,3 +188,5 @@ TEST(CliffordGolden, CgaMetricOfNullBasis) {
   EXPECT_EQ(alg.parse_blade("eo^einf")->first, 17u);
   EXPECT_EQ(alg.parse_blade("einf^eo")->second, -1.0);
 }
+
+}  // namespace pgamesh::clifford

@@ -7,7 +7,7 @@
 
 #include "test_clifford_util.hpp"
 
-using namespace pgamesh::clifford;
+namespace pgamesh::clifford {
 using pgamesh::test::mv_near;
 using pgamesh::test::random_mv;
 using pgamesh::test::random_vector;
@@ -362,3 +362,5 @@ TEST(CliffordIdentities, QcgaOuterOfNineVectorsIsDualToNinePoints) {
   EXPECT_TRUE(mv_near(w + swapped, Multivector{}, 1e-12));
   EXPECT_TRUE(outer(alg, w, v[3]).is_zero() || max_abs_coeff(outer(alg, w, v[3])) < 1e-12);
 }
+
+}  // namespace pgamesh::clifford

@@ -10,10 +10,9 @@
 #include "pga3_random.hpp"
 #include "pgamesh/algebra/pga3.hpp"
 
+namespace pgamesh::pga3 {
 namespace {
 
-using namespace pgamesh;
-using namespace pgamesh::pga3;
 using namespace pgamesh::test;
 
 template <class T>
@@ -211,3 +210,4 @@ TYPED_TEST(Pga3ExpLog, MotorBetweenPlanesLinesPoints) {
 }
 
 }  // namespace
+}  // namespace pgamesh::pga3

@@ -9,10 +9,9 @@
 #include "pgamesh/algebra/pga3.hpp"
 #include "support/golden.hpp"
 
+namespace pgamesh::pga3 {
 namespace {
 
-using namespace pgamesh;
-using namespace pgamesh::pga3;
 using pgamesh::test::json;
 using pgamesh::test::near_group;
 using pgamesh::test::near_scalar;
@@ -231,3 +230,4 @@ TEST(Pga3Golden, PolygonAreaFromEdges) {
 }
 
 }  // namespace
+}  // namespace pgamesh::pga3

@@ -10,10 +10,9 @@
 #include "pga3_random.hpp"
 #include "pgamesh/algebra/pga3.hpp"
 
+namespace pgamesh::pga3 {
 namespace {
 
-using namespace pgamesh;
-using namespace pgamesh::pga3;
 using namespace pgamesh::test;
 
 template <class T>
@@ -21,20 +20,10 @@ class Pga3Identities : public ::testing::Test {};
 using Scalars = ::testing::Types<float, double>;
 TYPED_TEST_SUITE(Pga3Identities, Scalars);
 
-template <class T>
-T tol() {
-  return std::is_same_v<T, float> ? T(5e-5) : T(1e-12);
-}
-
 // Angles from atan2 against acos of a dot product: acos loses digits near 0 and π.
 template <class T>
 T angle_tol() {
   return std::is_same_v<T, float> ? T(1e-3) : T(1e-9);
-}
-
-template <class T>
-Vec3<T> rvec(std::mt19937& r, T scale = T(2)) {
-  return scale * random_line<T>(r).moment();
 }
 
 TYPED_TEST(Pga3Identities, GeometricProductIsAssociative) {
@@ -125,3 +114,4 @@ TYPED_TEST(Pga3Identities, NormsOfJoinsAreMagnitudes) {
 }
 
 }  // namespace
+}  // namespace pgamesh::pga3

@@ -3,7 +3,7 @@
 
 #include "pgamesh/algebra/pga3.hpp"
 
-using namespace pgamesh::pga3;
+namespace pgamesh::pga3 {
 
 TEST(Pga3Join, TetrahedronCarriers) {
   const auto o = origin<double>();
@@ -14,3 +14,5 @@ TEST(Pga3Join, TetrahedronCarriers) {
   EXPECT_DOUBLE_EQ((o & (a & b & c)) / 6, 1.0 / 6);
   EXPECT_DOUBLE_EQ(((a & b & c) & o) / 6, -1.0 / 6);
 }
+
+}  // namespace pgamesh::pga3

@@ -9,21 +9,15 @@
 #include "pga3_random.hpp"
 #include "pgamesh/algebra/pga3.hpp"
 
+namespace pgamesh::pga3 {
 namespace {
 
-using namespace pgamesh;
-using namespace pgamesh::pga3;
 using namespace pgamesh::test;
 
 template <class T>
 class Pga3Metric : public ::testing::Test {};
 using Scalars = ::testing::Types<float, double>;
 TYPED_TEST_SUITE(Pga3Metric, Scalars);
-
-template <class T>
-T tol() {
-  return std::is_same_v<T, float> ? T(5e-5) : T(1e-12);
-}
 
 template <class T>
 void expect_vec_near(Vec3<T> got, Vec3<T> want, T eps) {
@@ -35,13 +29,8 @@ void expect_vec_near(Vec3<T> got, Vec3<T> want, T eps) {
 
 // Angles from atan2 against acos of a dot product: acos loses digits near 0 and π.
 template <class T>
-T angle_tol() {
+T metric_angle_tol() {
   return std::is_same_v<T, float> ? T(1e-3) : T(1e-7);
-}
-
-template <class T>
-Vec3<T> rvec(std::mt19937& r, T scale = T(2)) {
-  return scale * random_line<T>(r).moment();
 }
 
 template <class T>
@@ -92,13 +81,15 @@ TYPED_TEST(Pga3Metric, LineDistancesAndAngles) {
     // Parallel lines: distance of q2 from a.
     const Line<T> b_par = line_through(q2, T(-2) * d1);
     EXPECT_NEAR(distance(a, b_par), length(cross(q2 - q1, d1)) / length(d1), 16 * tol<T>());
-    EXPECT_NEAR(angle(a, b), clamp_acos(dot(d1, d2) / (length(d1) * length(d2))), angle_tol<T>());
+    EXPECT_NEAR(angle(a, b), clamp_acos(dot(d1, d2) / (length(d1) * length(d2))),
+                metric_angle_tol<T>());
     const Vec3<T> n = rvec<T>(r);
     const Plane<T> p = plane(n, T(0.5)), p2 = plane(d1, T(-1));
-    EXPECT_NEAR(angle(p, p2), clamp_acos(dot(n, d1) / (length(n) * length(d1))), angle_tol<T>());
+    EXPECT_NEAR(angle(p, p2), clamp_acos(dot(n, d1) / (length(n) * length(d1))),
+                metric_angle_tol<T>());
     // Line–plane angle = π/2 − angle(direction, normal), folded into [0, π/2].
     const T to_normal = clamp_acos(std::abs(dot(d1, n)) / (length(d1) * length(n)));
-    EXPECT_NEAR(angle(a, p), T(M_PI / 2) - to_normal, angle_tol<T>());
+    EXPECT_NEAR(angle(a, p), T(M_PI / 2) - to_normal, metric_angle_tol<T>());
     // Projection of a line onto a plane lies in the plane, along d − n (n·d)/|n|².
     const Line<T> pr = project(a, p);
     const Vec3<T> dp = d1 - (dot(n, d1) / dot(n, n)) * n;
@@ -129,3 +120,4 @@ TEST(Pga3MetricFixed, SideTest) {
 }
 
 }  // namespace
+}  // namespace pgamesh::pga3

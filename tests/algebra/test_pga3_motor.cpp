@@ -8,10 +8,8 @@
 
 #include "pgamesh/algebra/pga3.hpp"
 
+namespace pgamesh::pga3 {
 namespace {
-
-using namespace pgamesh;
-using namespace pgamesh::pga3;
 
 template <class T>
 struct Tol;
@@ -207,3 +205,4 @@ TEST(Pga3MotorFixed, LinearOperations) {
 }
 
 }  // namespace
+}  // namespace pgamesh::pga3

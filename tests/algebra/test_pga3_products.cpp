@@ -7,19 +7,19 @@
 #include "pga3_random.hpp"
 #include "pgamesh/algebra/pga3.hpp"
 
+namespace pgamesh::pga3 {
 namespace {
 
-using namespace pgamesh::pga3;
 using namespace pgamesh::test;
 
 template <class T>
 class Pga3Products : public ::testing::Test {};
 #ifdef PGAMESH_HAVE_GMP
-using Scalars = ::testing::Types<float, double, mpq_class>;
+using ProductScalars = ::testing::Types<float, double, mpq_class>;
 #else
-using Scalars = ::testing::Types<float, double>;
+using ProductScalars = ::testing::Types<float, double>;
 #endif
-TYPED_TEST_SUITE(Pga3Products, Scalars);
+TYPED_TEST_SUITE(Pga3Products, ProductScalars);
 
 constexpr int kRounds = 100;
 
@@ -197,3 +197,4 @@ TEST(Pga3ProductsFixed, BladeTableSigns) {
 }
 
 }  // namespace
+}  // namespace pgamesh::pga3

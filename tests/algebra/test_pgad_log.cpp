@@ -13,15 +13,9 @@
 #include "pgamesh/algebra/pgad.hpp"
 
 using namespace pgamesh;
+using pgamesh::test::max_diff;
 
 namespace {
-
-template <int D>
-double max_diff(const pgad::Multivector<D>& a, const pgad::Multivector<D>& b) {
-  double m = 0;
-  for (std::size_t i = 0; i < a.size; ++i) m = std::max(m, std::abs(a.c[i] - b.c[i]));
-  return m;
-}
 
 // A random bivector whose rotation angles satisfy |θ1| + |θ2| < π (the principal range of log):
 // |θ1| + |θ2| ≤ sqrt(2 (θ1² + θ2²)) and θ1² + θ2² = Σ (Euclidean coefficients)², kept ≤ 4.

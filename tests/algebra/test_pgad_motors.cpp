@@ -16,15 +16,9 @@
 #include "pgamesh/algebra/pgad.hpp"
 
 using namespace pgamesh;
+using pgamesh::test::max_diff;
 
 namespace {
-
-template <int D>
-double max_diff(const pgad::Multivector<D>& a, const pgad::Multivector<D>& b) {
-  double m = 0;
-  for (std::size_t i = 0; i < a.size; ++i) m = std::max(m, std::abs(a.c[i] - b.c[i]));
-  return m;
-}
 
 // e_(2j+1) e_(2j+2): the j-th coordinate plane (blade masks: bit 0 = e0, bit i = e_i).
 constexpr clifford::BladeMask plane_blade(int j) {
@@ -54,7 +48,7 @@ pgad::Multivector<D> bivector_with_angles(std::mt19937_64& rng, const std::vecto
 // A random bivector in the principal range of log: Σ ψ_j² = Σ (Euclidean coefficients)², and
 // |ψ1| + |ψ2| + |ψ3| ≤ √3 √(Σ ψ_j²) < π when the Euclidean coefficients have norm ≤ 1.75.
 template <int D>
-pgad::Multivector<D> random_bivector(std::mt19937_64& rng) {
+pgad::Multivector<D> random_principal_bivector(std::mt19937_64& rng) {
   auto b = random_grade2<D>(rng, true, 1.0);
   const double scale = std::uniform_real_distribution<double>(0.1, 1.75)(rng) / pgad::norm(b);
   return scale * b + random_grade2<D>(rng, false, 1.0);
@@ -73,12 +67,13 @@ template <int D>
 void check_random(std::uint64_t seed, int trials) {
   std::mt19937_64 rng(seed);
   for (int trial = 0; trial < trials; ++trial) {
-    const auto b = random_bivector<D>(rng);
+    const auto b = random_principal_bivector<D>(rng);
     check_round_trip(b, 1e-12, 1e-10,
                      "d = " + std::to_string(D) + ", trial " + std::to_string(trial));
     // exp(log M) = M for a product of motors (out of the principal range too: log picks the
     // principal one, whose exp is M)
-    const auto m = pgad::geometric(pgad::exp_series(b), pgad::exp_series(random_bivector<D>(rng)));
+    const auto m =
+        pgad::geometric(pgad::exp_series(b), pgad::exp_series(random_principal_bivector<D>(rng)));
     EXPECT_LT(max_diff(pgad::exp(pgad::log(m)), m), 1e-8) << "d = " << D << ", trial " << trial;
   }
 }
@@ -176,7 +171,7 @@ TEST(PgadMotors, KnownAnglesInSixDimensions) {
 }
 
 template <int D>
-void check_split(std::uint64_t seed) {
+void check_motor_split(std::uint64_t seed) {
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> angle(0.1, 1.0);
   for (int trial = 0; trial < 10; ++trial) {
@@ -207,8 +202,8 @@ void check_split(std::uint64_t seed) {
 }
 
 TEST(PgadMotors, InvariantSplitOfThreePlanes) {
-  check_split<6>(606);
-  check_split<7>(707);
+  check_motor_split<6>(606);
+  check_motor_split<7>(707);
 }
 
 TEST(PgadMotors, LogRefusesWhatIsNotAMotor) {
@@ -224,19 +219,19 @@ TEST(PgadMotors, LogRefusesWhatIsNotAMotor) {
 }
 
 template <int D>
-void check_general(const char* name, std::uint64_t seed) {
+void check_motor_general(const char* name, std::uint64_t seed) {
   const auto alg = *clifford::make_algebra(name);
   std::mt19937_64 rng(seed);
   for (int trial = 0; trial < 5; ++trial) {
-    const auto b =
-        trial == 0 ? bivector_with_angles<D>(rng, {0.6, 0.6, 0.6}) : random_bivector<D>(rng);
+    const auto b = trial == 0 ? bivector_with_angles<D>(rng, {0.6, 0.6, 0.6})
+                              : random_principal_bivector<D>(rng);
     test::expect_engine_exp_log_match_pgad(alg, b, 1e-11, name);
   }
 }
 
 TEST(PgadMotors, GeneralEngineUsesTheSameClosedForms) {
-  check_general<6>("pga6", 66);
-  check_general<7>("7,0,1", 77);
+  check_motor_general<6>("pga6", 66);
+  check_motor_general<7>("7,0,1", 77);
 }
 
 }  // namespace

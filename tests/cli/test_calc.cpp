@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <numbers>
 
+#include "pgamesh/core/number_text.hpp"
 #include "support/cli_run.hpp"
 #include "support/golden.hpp"
 #include "support/temp_file.hpp"
@@ -39,17 +40,11 @@ CliRun calc(const std::string& args, const std::string& input = "") {
   return pgamesh::test::run_cli("calc " + args, in.path());
 }
 
-std::string num(double v) {
-  char b[40];
-  std::snprintf(b, sizeof b, "%.17g", v);
-  return b;
-}
-
 std::string point_expr(const json& p) {
   std::string s = "point(";
   for (std::size_t i = 0; i < p.size(); ++i) {
     if (i) s.push_back(',');
-    s.append(num(p[i].get<double>()));
+    s.append(pgamesh::format_number(p[i].get<double>()));
   }
   s.push_back(')');
   return s;
@@ -110,8 +105,6 @@ std::vector<double> vec3(const json& value) {
   }
   return pgamesh::test::near_group(gv, ev, t);
 }
-
-constexpr Tolerance tight{1e-14, 1e-14};
 
 }  // namespace
 
@@ -238,7 +231,7 @@ TEST(Calc, QuadricElementsAndValuesMatchGolden) {
     std::string q = "quadric(";
     for (std::size_t k = 0; k < 10; ++k) {
       if (k) q += ",";
-      q += num(in["coefficients"][k].get<double>());
+      q += pgamesh::format_number(in["coefficients"][k].get<double>());
     }
     q += ")";
     for (const auto& m : models) {

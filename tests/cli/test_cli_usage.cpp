@@ -18,7 +18,7 @@ using pgamesh::test::TempFile;
 namespace {
 
 // The golden mesh NAME, quoted for the shell.
-std::string golden_mesh(const std::string& name) {
+std::string quoted_golden_mesh(const std::string& name) {
   std::string quoted =
       "\"";  // built in steps: GCC 12 misreads "\"" + std::string(...) (-Wrestrict)
   quoted += PGAMESH_GOLDEN_DIR;
@@ -76,7 +76,7 @@ TEST(CliUsage, HelpCommandPrintsTheCommandsHelp) {
 }
 
 TEST(CliUsage, BadUsageExitsTwoNamingTheOption) {
-  const std::string cube = golden_mesh("unit_cube.obj");
+  const std::string cube = quoted_golden_mesh("unit_cube.obj");
   struct Case {
     std::string args, named;
   };
@@ -106,7 +106,7 @@ TEST(CliUsage, BadUsageExitsTwoNamingTheOption) {
 
 TEST(CliUsage, NumbersFollowOneRule) {
   // parse_number (std::from_chars: no locale, the whole text): decimals, exponents, a '+'.
-  const std::string cube = golden_mesh("unit_cube.obj");
+  const std::string cube = quoted_golden_mesh("unit_cube.obj");
   const CliRun r = run_cli("fuel " + cube + " --level 0.25 --json --density 25e-1");
   ASSERT_EQ(r.status, 0) << r.err;
   const json a = parse_json(r.out);
@@ -144,8 +144,8 @@ TEST(CliUsage, OneVocabularyAcrossPropsCheckAndFuel) {
   EXPECT_EQ(props["topology"]["boundary_loop_count"], check["boundary_loop_count"]);
   EXPECT_EQ(props["topology"]["volume_range"], check["volume_range"]);
 
-  const json fuel =
-      parse_json(run_cli("fuel " + golden_mesh("unit_cube.obj") + " --level 0.5 --json").out);
+  const json fuel = parse_json(
+      run_cli("fuel " + quoted_golden_mesh("unit_cube.obj") + " --level 0.5 --json").out);
   for (const char* key : {"file", "format", "triangles", "faces", "warnings", "volume_valid",
                           "reasons", "topology", "forced"})
     EXPECT_TRUE(fuel.contains(key)) << key;
@@ -156,6 +156,6 @@ TEST(CliUsage, OneVocabularyAcrossPropsCheckAndFuel) {
   EXPECT_FALSE(fuel["topology"].contains("volume_valid"));
   // An empty tank: the fuel's centre of mass is null, as in props.
   const json empty =
-      parse_json(run_cli("fuel " + golden_mesh("unit_cube.obj") + " --level 0 --json").out);
+      parse_json(run_cli("fuel " + quoted_golden_mesh("unit_cube.obj") + " --level 0 --json").out);
   EXPECT_TRUE(empty["center_of_mass"].is_null()) << empty["center_of_mass"];
 }

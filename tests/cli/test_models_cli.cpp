@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "pgamesh/core/number_text.hpp"
 #include "support/cli_run.hpp"
 #include "support/golden.hpp"
 #include "support/temp_file.hpp"
@@ -28,12 +29,6 @@ using pgamesh::test::Tolerance;
 
 namespace {
 
-std::string num(double v) {
-  char b[40];
-  std::snprintf(b, sizeof b, "%.17g", v);
-  return b;
-}
-
 // s += sep + x, with sep only when s is not empty (appended piece by piece: GCC 12's -Wrestrict
 // misfires on `"literal" + std::string&&`).
 void append(std::string& s, const char* sep, const std::string& x) {
@@ -42,14 +37,16 @@ void append(std::string& s, const char* sep, const std::string& x) {
 }
 
 std::string triple(const json& p) {
-  return num(p[0].get<double>()) + "," + num(p[1].get<double>()) + "," + num(p[2].get<double>());
+  return pgamesh::format_number(p[0].get<double>()) + "," +
+         pgamesh::format_number(p[1].get<double>()) + "," +
+         pgamesh::format_number(p[2].get<double>());
 }
 
 std::string numbers(const json& a) {
   std::string s;
   for (const auto& x : a) {
     if (!s.empty()) s += ",";
-    s += num(x.get<double>());
+    s += pgamesh::format_number(x.get<double>());
   }
   return s;
 }
@@ -207,9 +204,9 @@ TEST(QuadricCli, EveryModelMatchesGolden) {
     for (const auto& l : ex["line_intersections"])
       args += " --line " + triple(l["origin"]) + "," + triple(l["direction"]);
     if (in.contains("rotation"))
-      args += " --rotate " + num(in["rotation"]["plane_axes"][0].get<double>()) + "," +
-              num(in["rotation"]["plane_axes"][1].get<double>()) + "," +
-              num(in["rotation"]["angle"].get<double>());
+      args += " --rotate " + pgamesh::format_number(in["rotation"]["plane_axes"][0].get<double>()) +
+              "," + pgamesh::format_number(in["rotation"]["plane_axes"][1].get<double>()) + "," +
+              pgamesh::format_number(in["rotation"]["angle"].get<double>());
     for (const auto& [model, key] : models) {
       const json got = run_json(args + " --model " + model);
       const std::string what = id + " " + model;
@@ -317,7 +314,9 @@ struct Noise {
 
 std::string csv(const std::vector<std::array<double, 3>>& points, char sep = ',') {
   std::string s = "x,y,z\n";
-  for (const auto& p : points) s += num(p[0]) + sep + num(p[1]) + sep + num(p[2]) + "\n";
+  for (const auto& p : points)
+    s += pgamesh::format_number(p[0]) + sep + pgamesh::format_number(p[1]) + sep +
+         pgamesh::format_number(p[2]) + "\n";
   return s;
 }
 

@@ -16,13 +16,6 @@ using namespace pgamesh::test;
 
 namespace {
 
-double max_abs(const Mat3& m) {
-  double s = 0;
-  for (const auto& row : m)
-    for (double v : row) s = std::max(s, std::abs(v));
-  return s;
-}
-
 void expect_matrix_near(const Mat3& got, const Mat3& expected, double rel) {
   const double tol = rel * max_abs(expected);
   for (int i = 0; i < 3; ++i)

@@ -7,12 +7,14 @@
 #include "pgamesh/io/read_mesh.hpp"
 #include "pgamesh/mesh/mass/mass_properties.hpp"
 #include "support/golden.hpp"
+#include "support/solids.hpp"
 
 #ifdef PGAMESH_HAVE_GMP
 #include "support/exact_mass.hpp"
 #endif
 
 using namespace pgamesh;
+using pgamesh::test::max_abs;
 
 namespace {
 
@@ -31,13 +33,6 @@ Loaded load(const std::string& relative) {
 
 #define REQUIRE_SHARED_MESHES() \
   if (pgamesh::test::shared_meshes_dir().empty()) GTEST_SKIP() << "../shared/meshes not found"
-
-double max_abs(const Mat3& m) {
-  double s = 0;
-  for (const auto& row : m)
-    for (double v : row) s = std::max(s, std::abs(v));
-  return s;
-}
 
 void expect_exact([[maybe_unused]] const Loaded& l) {
 #ifdef PGAMESH_HAVE_GMP

@@ -61,6 +61,10 @@ void check_all(const json& c, const Checks& checks) {
   }
 }
 
+}  // namespace
+
+// Outside the anonymous namespace: the TEST_F classes derive from it (GCC's -Wsubobject-linkage
+// in a unity build).
 class CgaGolden : public ::testing::Test {
  protected:
   static void SetUpTestSuite() { file_ = new json(pgamesh::test::load_golden("cga.json")); }
@@ -80,8 +84,6 @@ class CgaGolden : public ::testing::Test {
 };
 
 json* CgaGolden::file_ = nullptr;
-
-}  // namespace
 
 TEST_F(CgaGolden, FileHasTheExpectedCases) {
   EXPECT_EQ((*file_)["cases"].size(), 16u);

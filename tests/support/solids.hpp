@@ -3,6 +3,8 @@
 // and the transformations the invariance tests apply.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <functional>
 
 #include "pgamesh/core/mesh.hpp"
@@ -28,5 +30,13 @@ Mesh flipped(const Mesh& m);
 
 // A copy with the polygons fanned into triangles about their first corner.
 Mesh triangulated(const Mesh& m);
+
+// The largest |m_ij|: the scale of an inertia tensor, for relative tolerances.
+inline double max_abs(const Mat3& m) {
+  double s = 0;
+  for (const auto& row : m)
+    for (double v : row) s = std::max(s, std::abs(v));
+  return s;
+}
 
 }  // namespace pgamesh::test

@@ -17,18 +17,10 @@
 using namespace pgamesh;
 using namespace pgamesh::tank;
 using pgamesh::test::json;
+using pgamesh::test::json_vec3;
+using pgamesh::test::random_unit;
 
 namespace {
-
-Vec3d vec(const json& j) {
-  return {j[0].get<double>(), j[1].get<double>(), j[2].get<double>()};
-}
-
-Vec3d random_unit(std::mt19937_64& rng) {
-  std::normal_distribution<double> g;
-  Vec3d u{g(rng), g(rng), g(rng)};
-  return u / length(u);
-}
 
 // Far from the origin the plane's position is only known to a few units in the last place of the
 // absolute coordinates (4.7e-10 at 3e6): the paths differ by that much when they sum about
@@ -129,7 +121,7 @@ TEST(FuelSweep, AgreesWithReferencePassAndGoldenTable) {
     if (!c["input"].contains("table")) continue;
     ++found;
     const Tank t = make_tank(pgamesh::test::load_golden_obj(c["input"]["mesh"].get<std::string>()));
-    const Vec3d up = vec(c["input"]["up"]);
+    const Vec3d up = json_vec3(c["input"]["up"]);
     const auto levels = even_levels(level_range(t, up), c["input"]["table"].get<int>());
     const auto table = fuel_sweep(t, up, levels);
     const json& expected = c["expected"]["rows_level_volume"];
@@ -230,7 +222,8 @@ TEST(InverseLevel, GoldenCasesAndRoundTrips) {
     SCOPED_TRACE(c["id"].get<std::string>());
     const Tank t = make_tank(pgamesh::test::load_golden_obj(in["mesh"].get<std::string>()));
     const FuelIndex index(t);
-    const LevelSolution s = level_for_volume(index, vec(in["up"]), in["volume"].get<double>());
+    const LevelSolution s =
+        level_for_volume(index, json_vec3(in["up"]), in["volume"].get<double>());
     EXPECT_NEAR(s.level, c["expected"]["level"].get<double>(), 1e-10);
     EXPECT_LT(s.iterations, 20);
   }

@@ -12,9 +12,11 @@
 #include "pgamesh/tank/fuel_index.hpp"
 #include "pgamesh/tank/fuel_state.hpp"
 #include "pgamesh/tank/fuel_sweep.hpp"
+#include "tank/tank_test_support.hpp"
 
 using namespace pgamesh;
 using namespace pgamesh::tank;
+using pgamesh::test::random_unit;
 
 namespace {
 
@@ -59,12 +61,6 @@ VolMoment box_cut(Vec3d L, Vec3d n, double h) {
     if (flip[i]) c[i] = L[i] - c[i];
   r.first = r.volume * (c + lo);
   return r;
-}
-
-Vec3d random_unit(std::mt19937_64& rng) {
-  std::normal_distribution<double> g;
-  Vec3d u{g(rng), g(rng), g(rng)};
-  return u / length(u);
 }
 
 // Area of the convex polygon P ∩ {a·x ≤ h} in 2-D (Sutherland–Hodgman, then the shoelace).

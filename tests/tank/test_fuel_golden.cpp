@@ -10,14 +10,11 @@ using namespace pgamesh;
 using namespace pgamesh::tank;
 using pgamesh::test::flatten;
 using pgamesh::test::json;
+using pgamesh::test::json_vec3;
 using pgamesh::test::near_group;
 using pgamesh::test::near_scalar;
 
 namespace {
-
-Vec3d vec(const json& j) {
-  return {j[0].get<double>(), j[1].get<double>(), j[2].get<double>()};
-}
 
 void check_slice_case(const json& file, const json& c, const FuelState& st) {
   const auto tol = pgamesh::test::tolerance_of(file, c);
@@ -53,7 +50,7 @@ TEST(FuelGolden, AllSlices) {
     if (!in.contains("level") || !c["expected"].contains("volume")) continue;
     SCOPED_TRACE(c["id"].get<std::string>());
     const Tank t = make_tank(pgamesh::test::load_golden_obj(in["mesh"].get<std::string>()));
-    const FuelState st = fuel_naive(t, fuel_plane(vec(in["up"]), in["level"].get<double>()));
+    const FuelState st = fuel_naive(t, fuel_plane(json_vec3(in["up"]), in["level"].get<double>()));
     check_slice_case(file, c, st);
     ++slices;
   }

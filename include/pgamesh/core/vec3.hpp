@@ -21,7 +21,11 @@ struct Vec3 {
   friend constexpr Vec3 operator/(Vec3 a, T s) { return {a.x / s, a.y / s, a.z / s}; }
   constexpr Vec3& operator+=(Vec3 b) { return *this = *this + b; }
   constexpr Vec3& operator-=(Vec3 b) { return *this = *this - b; }
-  friend constexpr bool operator==(Vec3, Vec3) = default;
+  // Written out, not defaulted: a defaulted constexpr == is refused by clang 14 when T's own ==
+  // is not constexpr (GMP's rationals in the exact tests).
+  friend constexpr bool operator==(const Vec3& a, const Vec3& b) {
+    return a.x == b.x && a.y == b.y && a.z == b.z;
+  }
 };
 
 using Vec3d = Vec3<double>;
