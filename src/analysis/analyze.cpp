@@ -187,7 +187,7 @@ Analysis analyze(std::span<const char> bytes, const std::string& name,
   // The careful readers, releasing the file's pages as they parse (release_records); the mesh is
   // then handed to the topology pass, which frees it once welded (topology.hpp).
   MeshSource source;
-  Mesh mesh = read_mesh_bytes(bytes, name, &source, options.format, release_records);
+  Mesh mesh = detail::read_mesh_bytes(bytes, name, &source, options.format, release_records);
   source.path = name;
   Analysis r = mass_report(mesh, source, options);
   if (options.topology) r.topology = analyze_topology(std::move(mesh), options.topology_options);

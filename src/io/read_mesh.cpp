@@ -99,8 +99,8 @@ MeshFormat detect_format(std::span<const char> bytes) {
   return MeshFormat::unknown;
 }
 
-Mesh read_mesh_bytes(std::span<const char> bytes, const std::string& name, MeshSource* source,
-                     MeshFormat format, bool release_pages) {
+Mesh detail::read_mesh_bytes(std::span<const char> bytes, const std::string& name,
+                             MeshSource* source, MeshFormat format, bool release_pages) {
   MeshSource local;
   MeshSource& src = source ? *source : local;
   src = MeshSource{};
@@ -134,9 +134,17 @@ Mesh read_mesh_bytes(std::span<const char> bytes, const std::string& name, MeshS
   return mesh;
 }
 
+Mesh read_mesh_bytes(std::span<const char> bytes, const std::string& name, MeshSource* source,
+                     MeshFormat format) {
+  return detail::read_mesh_bytes(bytes, name, source, format, false);
+}
+
+Mesh read_mesh(const MappedFile& file, MeshSource* source, MeshFormat format) {
+  return detail::read_mesh_bytes(file.bytes(), file.path(), source, format, file.mapped());
+}
+
 Mesh read_mesh(const std::string& path, MeshSource* source, MeshFormat format) {
-  const MappedFile file = MappedFile::open(path);
-  return read_mesh_bytes(file.bytes(), path, source, format, file.mapped());
+  return read_mesh(MappedFile::open(path), source, format);
 }
 
 }  // namespace pgamesh

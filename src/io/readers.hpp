@@ -10,8 +10,14 @@
 
 #include "pgamesh/core/mesh.hpp"
 #include "pgamesh/geometry/body_moments.hpp"
+#include "pgamesh/io/mesh_format.hpp"
 
 namespace pgamesh::detail {
+
+// read_mesh_bytes (read_mesh.hpp), releasing the pages it has parsed when `release_pages` (the
+// bytes of a read-only file mapping only): what read_mesh(MappedFile) and the front door call.
+Mesh read_mesh_bytes(std::span<const char> bytes, const std::string& name, MeshSource* source,
+                     MeshFormat format, bool release_pages);
 
 void read_stl_binary(std::span<const char> bytes, const std::string& name, Mesh& mesh,
                      MeshSource& source, bool release_pages = false);

@@ -7,6 +7,7 @@
 #include <cstring>
 #include <string>
 
+#include "io/readers.hpp"
 #include "io/stl_binary.hpp"
 #include "mesh/mass/stl_ascii_sums.hpp"
 #include "mesh/mass/stl_mass_properties.hpp"
@@ -49,12 +50,11 @@ Mesh expect_same_reading(const std::string& stem, const std::string& bytes) {
   const Mesh b = read_mesh_bytes({bytes.data(), bytes.size()}, file.path(), &from_memory);
   expect_same_mesh(a, b);
   expect_same_source(from_file, from_memory);
-  // The same with the flag given explicitly on a mapping the test holds.
+  // The same through a mapping the test holds.
   const MappedFile mapped = MappedFile::open(file.path());
   EXPECT_TRUE(mapped.mapped());
   MeshSource explicit_source;
-  const Mesh c =
-      read_mesh_bytes(mapped.bytes(), file.path(), &explicit_source, MeshFormat::unknown, true);
+  const Mesh c = read_mesh(mapped, &explicit_source);
   expect_same_mesh(c, b);
   expect_same_source(explicit_source, from_memory);
   // The mapping still reads back the released bytes.
@@ -174,7 +174,8 @@ TEST(ReadReleasePages, StreamedStlPassesReleaseAndSumTheSame) {
         ascii_stl_mass_properties({text.data(), text.size()}, "f", kept_source, {});
     expect_same_mass(released, kept);
     expect_same_source(released_source, kept_source);
-    const Mesh m = read_mesh_bytes(mapped.bytes(), "f", &read_source, MeshFormat::unknown, true);
+    const Mesh m =
+        detail::read_mesh_bytes(mapped.bytes(), "f", &read_source, MeshFormat::unknown, true);
     expect_same_mass(released, mass_properties(m, {}, &read_source));
     expect_same_source(released_source, read_source);
     EXPECT_EQ(released.faces, tri.face_count() + (text == quad ? 1 : 0));

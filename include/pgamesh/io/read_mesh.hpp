@@ -9,6 +9,7 @@
 #include <string_view>
 
 #include "pgamesh/core/mesh.hpp"
+#include "pgamesh/io/mapped_file.hpp"
 #include "pgamesh/io/mesh_format.hpp"
 
 namespace pgamesh {
@@ -19,13 +20,16 @@ namespace pgamesh {
 Mesh read_mesh(const std::string& path, MeshSource* source = nullptr,
                MeshFormat format = MeshFormat::unknown);
 
-// Reads a mesh from bytes already in memory; `name` is the file name used in errors. With
-// `release_pages` — only for the bytes of a read-only file mapping (MappedFile::mapped()) — the
-// reader gives the pages it has parsed back to the kernel as it goes (madvise MADV_DONTNEED), so
-// that the peak memory is the mesh plus a few MiB of the file; the bytes stay readable.
+// Reads the mesh of a file the caller has open. When it is a read-only file mapping
+// (MappedFile::mapped()) the reader gives the pages it has parsed back to the kernel as it goes
+// (madvise MADV_DONTNEED), so that the peak memory is the mesh plus a few MiB of the file; the
+// bytes stay readable (the kernel reads them back from the file when touched).
+Mesh read_mesh(const MappedFile& file, MeshSource* source = nullptr,
+               MeshFormat format = MeshFormat::unknown);
+
+// Reads a mesh from bytes already in memory; `name` is the file name used in errors.
 Mesh read_mesh_bytes(std::span<const char> bytes, const std::string& name,
-                     MeshSource* source = nullptr, MeshFormat format = MeshFormat::unknown,
-                     bool release_pages = false);
+                     MeshSource* source = nullptr, MeshFormat format = MeshFormat::unknown);
 
 // The format of `bytes` by content: binary STL by size arithmetic (84 + 50 × count == size, even
 // when the header begins with "solid"), "ply" + format line, an OFF keyword, "solid" for ASCII STL,
