@@ -74,13 +74,13 @@ export function runCli(args, timeoutMs = 20000) {
   });
 }
 
-// Sends one raw HTTP/1.1 request (request line written exactly as given) and resolves to
-// { status, headers, body } of the answer.
-export function rawRequest(url, requestLine, extraHeaders = '') {
+// Sends one raw HTTP/1.1 request (request line written exactly as given, Host as a browser sends
+// it unless given) and resolves to { status, headers, body } of the answer.
+export function rawRequest(url, requestLine, extraHeaders = '', host = new URL(url).host) {
   const { hostname, port } = new URL(url);
   return new Promise((resolvePromise, reject) => {
     const socket = net.connect(Number(port), hostname, () => {
-      socket.write(`${requestLine}\r\nHost: ${hostname}\r\nConnection: close\r\n${extraHeaders}\r\n`);
+      socket.write(`${requestLine}\r\nHost: ${host}\r\nConnection: close\r\n${extraHeaders}\r\n`);
     });
     let data = '';
     let done = false;
@@ -89,17 +89,12 @@ export function rawRequest(url, requestLine, extraHeaders = '') {
     const finish = () => {
       const end = data.indexOf('\r\n\r\n');
       if (done || end < 0) return;
-      const lines = data.slice(0, end).split('\r\n');
-      const headers = {};
-      for (const l of lines.slice(1)) {
-        const i = l.indexOf(':');
-        headers[l.slice(0, i).trim().toLowerCase()] = l.slice(i + 1).trim();
-      }
+      const { status, headers } = parseHead(data.slice(0, end));
       const body = data.slice(end + 4);
       if (body.length < Number(headers['content-length'] || 0)) return;
       done = true;
       socket.destroy();
-      resolvePromise({ status: Number(lines[0].split(' ')[1]), headers, body });
+      resolvePromise({ status, headers, body });
     };
     socket.setTimeout(5000, () => socket.destroy(new Error('raw request timed out')));
     socket.on('data', (d) => {
@@ -110,6 +105,64 @@ export function rawRequest(url, requestLine, extraHeaders = '') {
     socket.on('end', () => {
       finish();
       if (!done) reject(new Error(`incomplete answer: ${JSON.stringify(data)}`));
+    });
+  });
+}
+
+// Parses the head of an HTTP answer: { status, headers } (header names in lower case).
+function parseHead(head) {
+  const lines = head.split('\r\n');
+  const headers = {};
+  for (const l of lines.slice(1)) {
+    const i = l.indexOf(':');
+    headers[l.slice(0, i).trim().toLowerCase()] = l.slice(i + 1).trim();
+  }
+  return { status: Number(lines[0].split(' ')[1]), headers };
+}
+
+// POSTs a chunked body of `chunks` chunks of `chunkSize` bytes of OBJ comment text to `path`, one
+// chunk per event-loop turn, stopping when the server answers. With `finish: false` the body is
+// left unfinished (no last chunk): only a server that stops reading at its limit can answer it.
+// Resolves to { status, headers, body, closed }: `closed` whether the server closed the
+// connection within 1 s of its answer.
+export function sendChunked(url, path, chunks, chunkSize, { finish = true } = {}) {
+  const { hostname, port, host } = new URL(url);
+  return new Promise((resolvePromise, reject) => {
+    const socket = net.connect(Number(port), hostname);
+    let data = '', answer = null, closed = false;
+    const chunk = `${chunkSize.toString(16)}\r\n${'#'.repeat(chunkSize - 1)}\n\r\n`;
+    const writeMore = (i) => {
+      if (answer || socket.destroyed) return;
+      if (i < chunks) socket.write(chunk, () => setImmediate(() => writeMore(i + 1)));
+      else if (finish) socket.write('0\r\n\r\n');
+    };
+    const settle = () => {
+      socket.destroy();
+      if (answer) resolvePromise({ ...answer, closed });
+      else reject(new Error(`no answer to the chunked upload: ${JSON.stringify(data)}`));
+    };
+    socket.on('connect', () => {
+      socket.write(`POST ${path} HTTP/1.1\r\nHost: ${host}\r\n` +
+                   'Content-Type: application/octet-stream\r\nTransfer-Encoding: chunked\r\n\r\n');
+      writeMore(0);
+    });
+    socket.setTimeout(10000, settle);
+    socket.on('data', (d) => {
+      data += d.toString('latin1');
+      const end = data.indexOf('\r\n\r\n');
+      if (answer || end < 0) return;
+      const { status, headers } = parseHead(data.slice(0, end));
+      const body = data.slice(end + 4);
+      if (body.length < Number(headers['content-length'] || 0)) return;
+      answer = { status, headers, body };
+      setTimeout(settle, 1000);
+    });
+    // The server may reset the connection while chunks are still in flight: the answer read
+    // before counts.
+    socket.on('error', () => {});
+    socket.on('close', () => {
+      closed = true;
+      settle();
     });
   });
 }

@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <memory>
 
 #include "pgamesh/core/input_error.hpp"
 
@@ -19,6 +20,20 @@ void send_raw_json(httplib::Response& res, std::string body) {
   res.status = 200;
   res.set_header("Cache-Control", "no-store");
   res.set_content(std::move(body), "application/json; charset=utf-8");
+}
+
+void send_error_and_close(httplib::Response& res, int status, const std::string& message) {
+  res.status = status;
+  res.set_header("Cache-Control", "no-store");
+  res.set_header("Connection", "close");
+  // httplib keeps a connection open after any answer it wrote in full; it closes it when a
+  // content provider fails. So the provider writes the whole answer and then reports failure.
+  auto body = std::make_shared<const std::string>(nlohmann::json{{"error", message}}.dump());
+  res.set_content_provider(body->size(), "application/json; charset=utf-8",
+                           [body](std::size_t offset, std::size_t length, httplib::DataSink& sink) {
+                             sink.write(body->data() + offset, length);
+                             return false;
+                           });
 }
 
 bool parse_number(const std::string& text, double& out) {

@@ -20,6 +20,10 @@ void send_raw_json(httplib::Response& res, std::string body);
 /// {"error": message} with `status`.
 void send_error(httplib::Response& res, int status, const std::string& message);
 
+/// {"error": message} with `status`, then the connection is closed: for answers given before the
+/// request's body was read whole, whose unread rest must not be taken for the next request.
+void send_error_and_close(httplib::Response& res, int status, const std::string& message);
+
 /// A whole query parameter as a finite double ("1e3", "-0.5"); false for anything else.
 bool parse_number(const std::string& text, double& out);
 

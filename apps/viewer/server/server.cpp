@@ -9,7 +9,9 @@
 #include <chrono>
 #include <cmath>
 #include <csignal>
+#include <cstdint>
 #include <cstdio>
+#include <ctime>
 #include <filesystem>
 #include <new>
 #include <regex>
@@ -17,6 +19,7 @@
 
 #include "assets.hpp"
 #include "boundary_json.hpp"
+#include "bounded_body.hpp"
 #include "fuel_routes.hpp"
 #include "mesh_store.hpp"
 #include "mesh_view.hpp"
@@ -34,6 +37,13 @@ namespace {
 using nlohmann::json;
 
 constexpr std::size_t kWorkerThreads = 32;
+// Connection limits (docs/viewer.md, "Limits"). Each read or write of a request or answer must
+// progress within kReadWriteTimeoutSeconds; an idle keep-alive connection is closed after
+// kKeepAliveSeconds and any connection after kKeepAliveRequests requests, so a client holds a
+// worker only while it sends or reads.
+constexpr time_t kReadWriteTimeoutSeconds = 5;
+constexpr time_t kKeepAliveSeconds = 2;
+constexpr std::size_t kKeepAliveRequests = 100;
 constexpr std::size_t kMaxBoundarySegments = 100000;
 
 // What a path may be asked with: "GET" (HEAD included), "POST", or nothing (unknown path).
@@ -46,6 +56,34 @@ std::string allowed_method(const AssetTable& assets, const std::string& path) {
     return "GET";
   if (path == "/api/upload") return "POST";
   return {};
+}
+
+// The declared Content-Length, 0 when there is none (or it is not a number: httplib refuses it).
+std::uint64_t content_length(const httplib::Request& req) {
+  const std::string text = req.get_header_value("Content-Length");
+  std::uint64_t length = 0;
+  std::from_chars(text.data(), text.data() + text.size(), length);
+  return length;
+}
+
+bool has_body(const httplib::Request& req) {
+  return req.has_header("Transfer-Encoding") || content_length(req) > 0;
+}
+
+std::string upload_limit_message(std::size_t max_upload) {
+  return "the request is larger than the upload limit of " + std::to_string(max_upload) +
+         " bytes (pgamesh serve --max-upload)";
+}
+
+// An answer given before the body was read closes the connection: the unread rest of the body
+// would otherwise be read as the next request.
+httplib::Server::HandlerResponse refuse(const httplib::Request& req, httplib::Response& res,
+                                        int status, const std::string& message) {
+  if (has_body(req))
+    send_error_and_close(res, status, message);
+  else
+    send_error(res, status, message);
+  return httplib::Server::HandlerResponse::Handled;
 }
 
 // The bundled meshes: every mesh file directly in the folder, sorted by name.
@@ -73,19 +111,20 @@ std::string upload_name(const httplib::Request& req) {
 
 void add_routes(httplib::Server& svr, const ServerOptions& options, const AssetTable& assets,
                 MeshStore& store) {
-  svr.set_pre_routing_handler([&assets](const httplib::Request& req, httplib::Response& res) {
+  // Every request passes here before its body is read: what may be asked, and how much.
+  svr.set_pre_routing_handler([&](const httplib::Request& req, httplib::Response& res) {
     const std::string allowed = allowed_method(assets, req.path);
-    if (allowed.empty()) {
-      send_error(res, 404, "not found: " + req.path);
-      return httplib::Server::HandlerResponse::Handled;
-    }
+    if (allowed.empty()) return refuse(req, res, 404, "not found: " + req.path);
     const bool ok =
         allowed == "GET" ? (req.method == "GET" || req.method == "HEAD") : req.method == allowed;
     if (!ok) {
       res.set_header("Allow", allowed == "GET" ? "GET, HEAD" : allowed);
-      send_error(res, 405, "method " + req.method + " not allowed on " + req.path);
-      return httplib::Server::HandlerResponse::Handled;
+      return refuse(req, res, 405, "method " + req.method + " not allowed on " + req.path);
     }
+    if (allowed == "GET" && has_body(req))
+      return refuse(req, res, 413, req.path + " takes no request body");
+    if (content_length(req) > options.max_upload)
+      return refuse(req, res, 413, upload_limit_message(options.max_upload));
     return httplib::Server::HandlerResponse::Unhandled;
   });
 
@@ -161,25 +200,39 @@ void add_routes(httplib::Server& svr, const ServerOptions& options, const AssetT
 
   add_fuel_routes(svr, store);
 
-  svr.Post("/api/upload", [&store](const httplib::Request& req, httplib::Response& res) {
+  // The body is the file's bytes whatever its Content-Type (a form-urlencoded or multipart body is
+  // not decoded), read through a content reader so the limit holds for every transfer encoding.
+  svr.Post("/api/upload", [&store, &options](const httplib::Request& req, httplib::Response& res,
+                                             const httplib::ContentReader& content_reader) {
     const std::string name = upload_name(req);
-    if (req.body.empty()) return send_error(res, 400, name + ": the upload is empty");
+    std::string body;
+    switch (read_bounded_body(content_reader, options.max_upload, body)) {
+      case BodyRead::too_large:
+        return send_error_and_close(res, 413, upload_limit_message(options.max_upload));
+      case BodyRead::unreadable:
+        return send_error_and_close(
+            res, res.status == 415 ? 415 : 400,
+            name +
+                ": the request body could not be read (malformed chunks, cut short, or an "
+                "unsupported Content-Encoding)");
+      case BodyRead::complete:
+        break;
+    }
+    if (body.empty()) return send_error(res, 400, name + ": the upload is empty");
     try {
-      const auto m = store.add_upload(name, {req.body.data(), req.body.size()});
+      const auto m = store.add_upload(name, {body.data(), body.size()});
       send_json(res, 201, mesh_summary_json(*m));
     } catch (const InputError& e) {
       send_error(res, 400, e.what());
     }
   });
 
-  // Errors raised by httplib itself (oversized body 413, malformed request 400, ...) get a JSON
-  // body.
+  // Errors raised by httplib itself (malformed request 400, request line too long 414, ...) get a
+  // JSON body; the answers written here already have their type.
   svr.set_error_handler([&options](const httplib::Request&, httplib::Response& res) {
-    if (!res.body.empty()) return;
+    if (res.has_header("Content-Type")) return;
     if (res.status == 413)
-      send_error(res, 413,
-                 "the request is larger than the upload limit of " +
-                     std::to_string(options.max_upload) + " bytes (pgamesh serve --max-upload)");
+      send_error(res, 413, upload_limit_message(options.max_upload));
     else
       send_error(res, res.status, std::string("HTTP ") + std::to_string(res.status));
   });
@@ -227,6 +280,8 @@ int run_server(const ServerOptions& options) {
   pthread_sigmask(SIG_BLOCK, &stop_signals, nullptr);
 
   httplib::Server svr;
+  // The pre-routing handler and the upload's content reader enforce the limit; this is httplib's
+  // own check of a Content-Length, kept should a route ever read a body without them.
   svr.set_payload_max_length(options.max_upload);
   // Not httplib's default SO_REUSEPORT: a second server on a busy port must fail, not share it.
   svr.set_socket_options([](socket_t sock) {
@@ -236,7 +291,10 @@ int run_server(const ServerOptions& options) {
   // httplib gives each connection a worker thread while it is open, idle keep-alive included:
   // enough workers for a few browser tabs (6 connections each) and short idle keep-alives.
   svr.new_task_queue = [] { return new httplib::ThreadPool(kWorkerThreads); };
-  svr.set_keep_alive_timeout(2);
+  svr.set_read_timeout(kReadWriteTimeoutSeconds);
+  svr.set_write_timeout(kReadWriteTimeoutSeconds);
+  svr.set_keep_alive_timeout(kKeepAliveSeconds);
+  svr.set_keep_alive_max_count(kKeepAliveRequests);
   svr.set_default_headers({{"X-Content-Type-Options", "nosniff"}});
   add_routes(svr, options, assets, store);
 

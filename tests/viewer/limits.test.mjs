@@ -1,0 +1,72 @@
+// What the server refuses: bodies over the limit however they are sent.
+import assert from 'node:assert/strict';
+import { after, before, describe, test } from 'node:test';
+
+import {
+  rawRequest, sendChunked, startServer, tetrahedronObj,
+} from './support.mjs';
+
+let server;
+before(async () => { server = await startServer(['--quiet']); });
+after(async () => { await server.stop(); });
+
+async function serverAnswers(url) {
+  const r = await fetch(new URL('/api/info', url));
+  assert.equal(r.status, 200);
+}
+
+describe('body limits', () => {
+  test('a chunked body over the limit gets 413, the connection closed, the server up',
+       async () => {
+    const small = await startServer(['--max-upload', '1K', '--quiet']);
+    try {
+      const r = await sendChunked(small.url, '/api/upload?name=long.obj', 2000, 1024);
+      assert.equal(r.status, 413);
+      assert.match(JSON.parse(r.body).error, /upload limit of 1024 bytes/);
+      assert.equal(r.closed, true);
+      await serverAnswers(small.url);
+    } finally {
+      await small.stop();
+    }
+  });
+
+  test('100 MB chunked to the default 64M limit: 413, and the server still answers', async () => {
+    const r = await sendChunked(server.url, '/api/upload?name=huge.stl', 1600, 64 * 1024);
+    assert.equal(r.status, 413);
+    assert.match(JSON.parse(r.body).error, /upload limit of 67108864 bytes/);
+    assert.equal(r.closed, true);
+    await serverAnswers(server.url);
+  });
+
+  test('a chunked body under the limit is accepted', async () => {
+    const chunked = await sendChunked(server.url, '/api/upload?name=padding.obj', 4, 1024);
+    // Comment lines only: a readable OBJ without faces, refused by the reader, not the limit.
+    assert.equal(chunked.status, 400);
+    assert.doesNotMatch(JSON.parse(chunked.body).error, /limit/);
+  });
+
+  test('a Content-Length over the limit is refused before the body is read', async () => {
+    const r = await rawRequest(server.url, 'POST /api/upload?name=huge.obj HTTP/1.1',
+                               'Content-Length: 1000000000000\r\n');
+    assert.equal(r.status, 413);
+    assert.equal(r.headers.connection, 'close');
+    await serverAnswers(server.url);
+  });
+
+  test('a form-urlencoded body of 100 KB is an upload like any other', async () => {
+    const padded = `# ${'x'.repeat(100 * 1024)}\n${tetrahedronObj}`;
+    const r = await fetch(new URL('/api/upload?name=form.obj', server.url), {
+      method: 'POST', body: padded,
+      headers: { 'content-type': 'application/x-www-form-urlencoded' },
+    });
+    assert.equal(r.status, 201);
+    assert.equal((await r.json()).faces, 4);
+  });
+
+  test('a body on a route that takes none is refused and the connection closed', async () => {
+    const r = await rawRequest(server.url, 'GET /api/info HTTP/1.1',
+                               'Transfer-Encoding: chunked\r\n');
+    assert.equal(r.status, 413);
+    assert.equal(r.headers.connection, 'close');
+  });
+});
