@@ -8,6 +8,7 @@
 #include <string_view>
 #include <system_error>
 
+#include "local_hosts.hpp"
 #include "serve_help.hpp"
 #include "server.hpp"
 
@@ -79,6 +80,8 @@ int main(int argc, char** argv) {
       }
     } else if (arg == "--assets" && has_value) {
       options.web_dir = argv[++i];
+    } else if (arg == "--allow-remote") {
+      options.allow_remote = true;
     } else if (arg == "--quiet") {
       options.log_requests = false;
     } else if (!arg.empty() && arg[0] == '-') {
@@ -88,6 +91,20 @@ int main(int argc, char** argv) {
     } else {
       options.files.emplace_back(arg);
     }
+  }
+  // The server has no authentication: another machine may reach it only when the user says so.
+  if (!pgamesh::viewer::is_loopback_host(options.host)) {
+    if (!options.allow_remote) {
+      std::fprintf(stderr,
+                   "pgamesh serve: --host %s is not a loopback address: other machines could "
+                   "read and upload meshes; add --allow-remote to serve it anyway\n",
+                   options.host.c_str());
+      return 2;
+    }
+    std::fprintf(stderr,
+                 "pgamesh serve: warning: serving on %s without authentication: anyone who "
+                 "reaches this address can read and upload meshes\n",
+                 options.host.c_str());
   }
   return pgamesh::viewer::run_server(options);
 }

@@ -1,9 +1,11 @@
-// What the server refuses: bodies over the limit however they are sent.
+// What the server refuses: bodies over the limit however they are sent, requests for other host
+// names (DNS rebinding) and from other sites' pages, addresses other machines reach unless asked
+// for.
 import assert from 'node:assert/strict';
 import { after, before, describe, test } from 'node:test';
 
 import {
-  rawRequest, sendChunked, startServer, tetrahedronObj,
+  rawRequest, runCli, sendChunked, startServer, tetrahedronObj,
 } from './support.mjs';
 
 let server;
@@ -68,5 +70,48 @@ describe('body limits', () => {
                                'Transfer-Encoding: chunked\r\n');
     assert.equal(r.status, 413);
     assert.equal(r.headers.connection, 'close');
+  });
+});
+
+describe('who may ask', () => {
+  test('a Host other than this machine\'s loopback names gets 421', async () => {
+    const { port } = new URL(server.url);
+    for (const host of ['evil.example', `evil.example:${port}`, `127.0.0.1:${Number(port) + 1}`]) {
+      const r = await rawRequest(server.url, 'GET /api/meshes HTTP/1.1', '', host);
+      assert.equal(r.status, 421, host);
+      assert.match(JSON.parse(r.body).error, /Host/);
+    }
+    for (const host of [`127.0.0.1:${port}`, `localhost:${port}`, `LOCALHOST:${port}`]) {
+      const r = await rawRequest(server.url, 'GET /api/meshes HTTP/1.1', '', host);
+      assert.equal(r.status, 200, host);
+    }
+  });
+
+  test('a cross-origin POST gets 403, a same-origin one works, no CORS headers', async () => {
+    const url = new URL('/api/upload?name=t.obj', server.url);
+    const cross = await fetch(url, { method: 'POST', body: tetrahedronObj,
+                                     headers: { origin: 'http://evil.example' } });
+    assert.equal(cross.status, 403);
+    assert.match((await cross.json()).error, /cross-origin/);
+    assert.equal(cross.headers.get('access-control-allow-origin'), null);
+    const same = await fetch(url, { method: 'POST', body: tetrahedronObj,
+                                    headers: { origin: new URL(server.url).origin } });
+    assert.equal(same.status, 201);
+    assert.equal(same.headers.get('access-control-allow-origin'), null);
+  });
+
+  test('a non-loopback --host needs --allow-remote (usage error, exit 2)', async () => {
+    const r = await runCli(['serve', '--port', '0', '--host', '0.0.0.0']);
+    assert.equal(r.code, 2);
+    assert.match(r.stderr, /--allow-remote/);
+  });
+
+  test('with --allow-remote the server warns and starts', async () => {
+    const s = await startServer(['--host', '0.0.0.0', '--allow-remote', '--quiet']);
+    try {
+      assert.match(s.stderr(), /warning: serving on 0\.0\.0\.0 without authentication/);
+    } finally {
+      await s.stop();
+    }
   });
 });

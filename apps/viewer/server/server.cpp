@@ -21,6 +21,7 @@
 #include "boundary_json.hpp"
 #include "bounded_body.hpp"
 #include "fuel_routes.hpp"
+#include "local_hosts.hpp"
 #include "mesh_store.hpp"
 #include "mesh_view.hpp"
 #include "pgamesh/core/input_error.hpp"
@@ -70,6 +71,10 @@ bool has_body(const httplib::Request& req) {
   return req.has_header("Transfer-Encoding") || content_length(req) > 0;
 }
 
+bool changes_state(const std::string& method) {
+  return method != "GET" && method != "HEAD" && method != "OPTIONS";
+}
+
 std::string upload_limit_message(std::size_t max_upload) {
   return "the request is larger than the upload limit of " + std::to_string(max_upload) +
          " bytes (pgamesh serve --max-upload)";
@@ -109,10 +114,21 @@ std::string upload_name(const httplib::Request& req) {
   return name.empty() ? "upload" : name;
 }
 
-void add_routes(httplib::Server& svr, const ServerOptions& options, const AssetTable& assets,
-                MeshStore& store) {
-  // Every request passes here before its body is read: what may be asked, and how much.
+void add_routes(httplib::Server& svr, const ServerOptions& options, const HostCheck& hosts,
+                const AssetTable& assets, MeshStore& store) {
+  // Every request passes here before its body is read: who may ask, what, and how much.
   svr.set_pre_routing_handler([&](const httplib::Request& req, httplib::Response& res) {
+    const std::string host = req.get_header_value("Host");
+    if (!host_allowed(hosts, host))
+      return refuse(req, res, 421,
+                    "this server answers requests for http://" + hosts.hosts.front() +
+                        "/ and the other names of this machine's loopback, not for Host '" + host +
+                        "'");
+    if (changes_state(req.method) && req.has_header("Origin") &&
+        !origin_is_own(req.get_header_value("Origin"), host))
+      return refuse(req, res, 403,
+                    "cross-origin request refused: Origin '" + req.get_header_value("Origin") +
+                        "' is not this server's");
     const std::string allowed = allowed_method(assets, req.path);
     if (allowed.empty()) return refuse(req, res, 404, "not found: " + req.path);
     const bool ok =
@@ -296,7 +312,6 @@ int run_server(const ServerOptions& options) {
   svr.set_keep_alive_timeout(kKeepAliveSeconds);
   svr.set_keep_alive_max_count(kKeepAliveRequests);
   svr.set_default_headers({{"X-Content-Type-Options", "nosniff"}});
-  add_routes(svr, options, assets, store);
 
   const int port = options.port == 0
                        ? svr.bind_to_any_port(options.host)
@@ -306,6 +321,8 @@ int run_server(const ServerOptions& options) {
                  options.host.c_str(), options.port);
     return 1;
   }
+  const HostCheck hosts = host_check_for(options.host, port, options.allow_remote);
+  add_routes(svr, options, hosts, assets, store);
   const bool ipv6 = options.host.find(':') != std::string::npos;
   std::printf("pgamesh serve: listening on http://%s%s%s:%d/\n", ipv6 ? "[" : "",
               options.host.c_str(), ipv6 ? "]" : "", port);

@@ -10,6 +10,7 @@ namespace pgamesh::viewer {
 
 struct ServerOptions {
   std::string host = "127.0.0.1";  // loopback unless the user asks otherwise (docs/viewer.md)
+  bool allow_remote = false;       // --allow-remote: the user accepts a non-loopback host
   int port = 8080;                 // 0: any free port (the URL printed says which)
   std::size_t max_upload = std::size_t{64} << 20;  // bytes; bigger request bodies get 413
   std::size_t max_kept_uploads = 8;                // uploads kept in memory, oldest dropped first
