@@ -80,6 +80,12 @@ int main(int argc, char** argv) {
       }
     } else if (arg == "--assets" && has_value) {
       options.web_dir = argv[++i];
+      std::error_code ec;
+      if (!std::filesystem::is_directory(options.web_dir, ec)) {
+        std::fprintf(stderr, "pgamesh serve: --assets wants a folder of the page, got '%s'\n",
+                     argv[i]);
+        return 2;
+      }
     } else if (arg == "--allow-remote") {
       options.allow_remote = true;
     } else if (arg == "--quiet") {

@@ -1,11 +1,11 @@
 // What the server refuses: bodies over the limit however they are sent, requests for other host
 // names (DNS rebinding) and from other sites' pages, addresses other machines reach unless asked
-// for.
+// for, and command lines naming what cannot be served.
 import assert from 'node:assert/strict';
 import { after, before, describe, test } from 'node:test';
 
 import {
-  rawRequest, runCli, sendChunked, startServer, tetrahedronObj,
+  rawRequest, runCli, sendChunked, startServer, tankPath, tetrahedronObj,
 } from './support.mjs';
 
 let server;
@@ -113,5 +113,26 @@ describe('who may ask', () => {
     } finally {
       await s.stop();
     }
+  });
+});
+
+describe('start-up', () => {
+  test('a missing FILE stops the start with its name', async () => {
+    const r = await runCli(['serve', '--port', '0', tankPath, '/nonexistent/nothing.stl']);
+    assert.notEqual(r.code, 0);
+    assert.match(r.stderr, /nothing\.stl/);
+    assert.doesNotMatch(r.stdout, /listening/);
+  });
+
+  test('a FILE that is not a mesh stops the start with the reader\'s error', async () => {
+    const r = await runCli(['serve', '--port', '0', new URL(import.meta.url).pathname]);
+    assert.notEqual(r.code, 0);
+    assert.match(r.stderr, /limits\.test\.mjs/);
+  });
+
+  test('--assets naming no folder is a usage error', async () => {
+    const r = await runCli(['serve', '--port', '0', '--assets', '/nonexistent']);
+    assert.equal(r.code, 2);
+    assert.match(r.stderr, /--assets/);
   });
 });

@@ -282,8 +282,15 @@ int run_server(const ServerOptions& options) {
                  m.c_str());
 
   MeshStore store(options.max_kept_uploads);
-  for (const std::string& f : options.files)
-    store.add_file(f, std::filesystem::path(f).filename().string(), "command line");
+  // Files named on the command line are read now: a mistake there is reported before serving.
+  for (const std::string& f : options.files) {
+    try {
+      store.get(store.add_file(f, std::filesystem::path(f).filename().string(), "command line"));
+    } catch (const InputError& e) {
+      std::fprintf(stderr, "pgamesh serve: %s\n", e.what());
+      return 1;
+    }
+  }
   for (const auto& p : bundled_meshes(options.bundled_dir))
     store.add_file(p.string(), p.filename().string(), "bundled");
 

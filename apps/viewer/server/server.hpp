@@ -21,8 +21,8 @@ struct ServerOptions {
 };
 
 /// Serves until SIGINT or SIGTERM. Prints "pgamesh serve: listening on http://HOST:PORT/" on stdout
-/// once the socket is bound. Returns the process exit status (0 after a signal, 1 when the address
-/// cannot be bound).
+/// once the socket is bound. Returns the process exit status (0 after a signal, 1 when a file named
+/// on the command line cannot be read or the address cannot be bound).
 int run_server(const ServerOptions& options);
 
 }  // namespace pgamesh::viewer
