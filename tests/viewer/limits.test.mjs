@@ -32,6 +32,27 @@ describe('body limits', () => {
     }
   });
 
+  test('a declared length over the limit: 413 read in full, or before sending when asked',
+       async () => {
+    const small = await startServer(['--max-upload', '1K', '--quiet']);
+    try {
+      const big = `# ${'x'.repeat(2 << 20)}\n${tetrahedronObj}`;
+      for (let i = 0; i < 3; ++i) {
+        const r = await fetch(new URL('/api/upload?name=big.obj', small.url),
+                              { method: 'POST', body: big });
+        assert.equal(r.status, 413);
+        assert.match((await r.json()).error, /upload limit of 1024 bytes/);
+      }
+      const asked = await rawRequest(small.url, 'POST /api/upload?name=big.obj HTTP/1.1',
+                                     'Content-Length: 2048\r\nExpect: 100-continue\r\n');
+      assert.equal(asked.status, 413);
+      assert.match(JSON.parse(asked.body).error, /upload limit of 1024 bytes/);
+      await serverAnswers(small.url);
+    } finally {
+      await small.stop();
+    }
+  });
+
   test('100 MB chunked to the default 64M limit: 413, and the server still answers', async () => {
     const r = await sendChunked(server.url, '/api/upload?name=huge.stl', 1600, 64 * 1024);
     assert.equal(r.status, 413);
@@ -40,7 +61,7 @@ describe('body limits', () => {
     await serverAnswers(server.url);
   });
 
-  test('a chunked body under the limit is accepted', async () => {
+  test('a chunked body under the limit reaches the reader', async () => {
     const chunked = await sendChunked(server.url, '/api/upload?name=padding.obj', 4, 1024);
     // Comment lines only: a readable OBJ without faces, refused by the reader, not the limit.
     assert.equal(chunked.status, 400);

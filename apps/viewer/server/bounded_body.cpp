@@ -8,8 +8,7 @@ namespace {
 
 // Past the limit, the rest of the body is read and dropped for a while before the 413: a socket
 // closed with unread data is reset, and a client reset while still sending loses the answer it
-// was sent. Bounded in bytes and time, so a body without end is cut all the same.
-constexpr std::size_t kDrainBytes = std::size_t{64} << 20;
+// was sent. Bounded in bytes (kBodyDrainBytes) and time, so a body without end is cut all the same.
 constexpr std::chrono::seconds kDrainTime{1};
 
 }  // namespace
@@ -32,7 +31,7 @@ BodyRead read_bounded_body(const httplib::ContentReader& reader, std::size_t lim
       drain_end = std::chrono::steady_clock::now() + kDrainTime;
     }
     dropped += size;
-    return dropped <= kDrainBytes && std::chrono::steady_clock::now() < drain_end;
+    return dropped <= kBodyDrainBytes && std::chrono::steady_clock::now() < drain_end;
   });
   if (over_limit) return BodyRead::too_large;
   return read ? BodyRead::complete : BodyRead::unreadable;

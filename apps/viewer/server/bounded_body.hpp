@@ -11,6 +11,9 @@
 
 namespace pgamesh::viewer {
 
+/// How much of a body past the limit is read and dropped so that the client reads the 413.
+constexpr std::size_t kBodyDrainBytes = std::size_t{64} << 20;
+
 enum class BodyRead {
   complete,    // `out` holds the whole body
   too_large,   // over the limit: `out` is empty, the rest of the body possibly unread

@@ -139,7 +139,9 @@ void add_routes(httplib::Server& svr, const ServerOptions& options, const HostCh
     }
     if (allowed == "GET" && has_body(req))
       return refuse(req, res, 413, req.path + " takes no request body");
-    if (content_length(req) > options.max_upload)
+    // A declared length up to kBodyDrainBytes over the limit is read and dropped by httplib
+    // (set_payload_max_length) so the client reads the 413; beyond that it is not read at all.
+    if (content_length(req) > options.max_upload + kBodyDrainBytes)
       return refuse(req, res, 413, upload_limit_message(options.max_upload));
     return httplib::Server::HandlerResponse::Unhandled;
   });
@@ -222,7 +224,10 @@ void add_routes(httplib::Server& svr, const ServerOptions& options, const HostCh
                                              const httplib::ContentReader& content_reader) {
     const std::string name = upload_name(req);
     std::string body;
-    switch (read_bounded_body(content_reader, options.max_upload, body)) {
+    BodyRead read = read_bounded_body(content_reader, options.max_upload, body);
+    // httplib itself drops a declared Content-Length over set_payload_max_length, with 413.
+    if (read == BodyRead::unreadable && res.status == 413) read = BodyRead::too_large;
+    switch (read) {
       case BodyRead::too_large:
         return send_error_and_close(res, 413, upload_limit_message(options.max_upload));
       case BodyRead::unreadable:
@@ -303,9 +308,15 @@ int run_server(const ServerOptions& options) {
   pthread_sigmask(SIG_BLOCK, &stop_signals, nullptr);
 
   httplib::Server svr;
-  // The pre-routing handler and the upload's content reader enforce the limit; this is httplib's
-  // own check of a Content-Length, kept should a route ever read a body without them.
+  // A declared Content-Length over the limit: read and dropped by httplib, then 413.
   svr.set_payload_max_length(options.max_upload);
+  // A client asking before it sends (curl does for bodies over 1 MiB) is refused before sending.
+  svr.set_expect_100_continue_handler(
+      [&options](const httplib::Request& req, httplib::Response& res) {
+        if (content_length(req) <= options.max_upload) return 100;
+        send_error(res, 413, upload_limit_message(options.max_upload));
+        return 413;
+      });
   // Not httplib's default SO_REUSEPORT: a second server on a busy port must fail, not share it.
   svr.set_socket_options([](socket_t sock) {
     int yes = 1;
