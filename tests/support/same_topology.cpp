@@ -72,7 +72,7 @@ void expect_same_report(const TopologyReport& a, const TopologyReport& b) {
   expect_same_edges(a.inconsistent_edge_list, b.inconsistent_edge_list);
   EXPECT_EQ(a.components, b.components);
   EXPECT_EQ(a.closed_components, b.closed_components);
-  EXPECT_EQ(a.negative_components, b.negative_components);
+  EXPECT_EQ(a.inward_components, b.inward_components);
   ASSERT_EQ(a.component_list.size(), b.component_list.size());
   for (std::size_t i = 0; i < a.component_list.size(); ++i) {
     const ComponentSummary &x = a.component_list[i], &y = b.component_list[i];
