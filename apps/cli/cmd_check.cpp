@@ -96,7 +96,8 @@ void print_readable(const Mesh& mesh, const MeshSource& source, const Analysis& 
   faces("nearly zero-area", r.small_area_list, r.small_area_faces);
   faces("duplicated", r.duplicated_list, r.duplicated_faces);
   std::printf("  components          %zu (%zu closed", r.components, r.closed_components);
-  if (r.cavity_components) std::printf(", %zu cavities", r.cavity_components);
+  if (r.cavity_components)
+    std::printf(", %zu %s", r.cavity_components, r.cavity_components == 1 ? "cavity" : "cavities");
   if (r.inward_components) std::printf(", %zu inward", r.inward_components);
   std::printf(")\n");
   if (r.components > 1)

@@ -178,7 +178,9 @@ TEST(OrientationByNesting, RoundingResidueIsLeftAlone) {
     for (const Vec3d& p : m.vertices) box.add(p);
     EXPECT_LE(std::abs(s.volume), volume_residue_bound(s.area, box.diagonal()));
     EXPECT_FALSE(s.inward);
+    EXPECT_FALSE(s.cavity);  // encloses nothing
     EXPECT_EQ(r.inward_components, 0u);
+    EXPECT_EQ(r.cavity_components, 0u);
     Mesh fixed = m;
     EXPECT_EQ(fix_orientation(fixed).flipped, 0u);
     EXPECT_EQ(fixed.corners, m.corners);

@@ -333,7 +333,8 @@ void finish_report(TopologyTally& t,
     ComponentSummary& s = t.components[k];
     if (s.closed) {
       s.depth = depth[k];
-      s.cavity = s.depth % 2 == 1;
+      // A residue encloses nothing: at odd depth it is not a cavity.
+      s.cavity = s.depth % 2 == 1 && std::abs(s.volume) > volume_residue_bound(s.area, diagonal());
       s.inward = judge_shell(s.volume, s.depth, s.area, diagonal) == ShellOrientation::wrong;
       if (s.cavity) ++r.cavity_components;
       if (s.inward) ++r.inward_components;

@@ -52,7 +52,7 @@ struct ComponentSummary {
   // the sign its depth forbids beyond the rounding residue bound (a defect --fix-orientation
   // repairs).
   std::uint32_t depth = 0;
-  bool cavity = false;  // closed and at odd depth
+  bool cavity = false;  // closed, at odd depth, and not a rounding residue
   bool inward = false;  // closed and oriented against its depth
 };
 
@@ -100,7 +100,7 @@ struct TopologyReport {
   // Components (edge-connected after the weld; collapsed faces belong to none).
   std::size_t components = 0;
   std::size_t closed_components = 0;
-  std::size_t cavity_components = 0;  // closed components at odd depth (ComponentSummary::cavity)
+  std::size_t cavity_components = 0;  // ComponentSummary::cavity
   std::size_t inward_components = 0;  // closed components oriented against their depth (inward)
   std::vector<ComponentSummary> component_list;
 
