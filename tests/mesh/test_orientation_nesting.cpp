@@ -124,6 +124,26 @@ TEST(OrientationByNesting, SeparateSolidsBothFaceOut) {
   EXPECT_EQ(analyze_topology(m).volume, 9.0);
 }
 
+// Nine hollow cubes side by side (18 shells): each cavity is found inside its own cube and no
+// other; one cavity turned outward is the only defect.
+TEST(OrientationByNesting, NineHollowCubesSideBySide) {
+  Mesh m;
+  for (int i = 0; i < 9; ++i) {
+    const Vec3d c{3.0 * (i % 3), 3.0 * (i / 3), 0.5 * i};
+    m = joined({m, centred_cube(2, c, true), centred_cube(1, c + Vec3d{0.25, 0, 0}, i == 4)});
+  }
+  const TopologyReport r = analyze_topology(m);
+  EXPECT_EQ(r.volume, 9 * 7.0 + 2.0);
+  EXPECT_EQ(r.closed_components, 18u);
+  EXPECT_EQ(r.cavity_components, 9u);
+  EXPECT_EQ(r.inward_components, 1u);
+  for (std::uint32_t k = 0; k < 18; ++k) EXPECT_EQ(r.component_list[k].depth, k % 2) << k;
+  EXPECT_TRUE(r.component_list[9].inward);
+  const OrientationFix fix = fix_orientation(m);
+  EXPECT_EQ(fix.flipped, 6u);
+  EXPECT_EQ(analyze_topology(m).volume, 63.0);
+}
+
 #ifdef PGAMESH_HAVE_GMP
 // A torus (R 4, r 2) with a toroidal cavity (R 4, r 1) along its core: the cavity's test point is
 // inside the outer tube, the outer's outside the cavity. The volume is the exact sum of the

@@ -1,5 +1,6 @@
 #include "pgamesh/mesh/topology/shell_nesting.hpp"
 
+#include <algorithm>
 #include <numbers>
 
 #include "pgamesh/core/bounding_box.hpp"
@@ -65,17 +66,24 @@ std::vector<std::uint32_t> shell_depths(std::span<const std::uint32_t> face_comp
     }
   }
 
-  // The shells whose test point lies in shell s's box: the only ones s can hold.
+  // The shells whose test point lies in shell s's box: the only ones s can hold. The points
+  // sorted by x, each box looks only at those in its x range (many separate parts stay cheap).
+  std::vector<std::uint32_t> by_x;
+  for (std::size_t a = 0; a < shells; ++a)
+    if (has_point[a]) by_x.push_back(static_cast<std::uint32_t>(a));
+  std::sort(by_x.begin(), by_x.end(),
+            [&](std::uint32_t a, std::uint32_t b) { return point[a].x < point[b].x; });
   std::vector<std::vector<std::uint32_t>> candidates(shells);
-  for (std::size_t s = 0; s < shells; ++s)
-    for (std::size_t a = 0; a < shells; ++a) {
-      if (a == s || !has_point[a]) continue;
-      const Vec3d q = point[a];
-      const Box3& b = box[s];
-      if (q.x >= b.lo.x && q.x <= b.hi.x && q.y >= b.lo.y && q.y <= b.hi.y && q.z >= b.lo.z &&
-          q.z <= b.hi.z)
-        candidates[s].push_back(static_cast<std::uint32_t>(a));
+  for (std::size_t s = 0; s < shells; ++s) {
+    const Box3& b = box[s];
+    auto first = std::lower_bound(by_x.begin(), by_x.end(), b.lo.x,
+                                  [&](std::uint32_t a, double x) { return point[a].x < x; });
+    for (auto it = first; it != by_x.end() && point[*it].x <= b.hi.x; ++it) {
+      const Vec3d q = point[*it];
+      if (*it != s && q.y >= b.lo.y && q.y <= b.hi.y && q.z >= b.lo.z && q.z <= b.hi.z)
+        candidates[s].push_back(*it);
     }
+  }
 
   // Pass 2: winding[s][i] = Σ solid angles of s's fan triangles about candidates[s][i].
   std::vector<std::vector<double>> winding(shells);

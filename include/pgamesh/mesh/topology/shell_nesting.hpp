@@ -56,7 +56,8 @@ using FaceCorners = std::function<void(std::uint32_t face, std::vector<Vec3d>& o
 // nearest integer; a point within 1/4 of a half-integer lies on the other shell's surface (shells
 // that touch or overlap there) and counts as outside it. Reads no face when fewer than two
 // components are shells; otherwise two passes over the faces, each face of a shell costing one
-// solid angle per other shell whose test point lies in its bounding box.
+// solid angle per other shell whose test point lies in its bounding box (found among the points
+// sorted by x: O(S log S) plus the points in each box's x range, for S shells).
 std::vector<std::uint32_t> shell_depths(std::span<const std::uint32_t> face_component,
                                         std::span<const std::uint8_t> is_shell,
                                         const FaceCorners& corners);
