@@ -96,19 +96,23 @@ void print_readable(const Mesh& mesh, const MeshSource& source, const Analysis& 
   faces("nearly zero-area", r.small_area_list, r.small_area_faces);
   faces("duplicated", r.duplicated_list, r.duplicated_faces);
   std::printf("  components          %zu (%zu closed", r.components, r.closed_components);
-  if (r.negative_components) std::printf(", %zu inward", r.negative_components);
+  if (r.cavity_components)
+    std::printf(", %zu %s", r.cavity_components, r.cavity_components == 1 ? "cavity" : "cavities");
+  if (r.inward_components) std::printf(", %zu inward", r.inward_components);
   std::printf(")\n");
   if (r.components > 1)
     for (const ComponentSummary& c : r.component_list)
-      std::printf("    from face %u: %zu faces, area %.9g, volume %.9g%s\n", c.first_face, c.faces,
-                  c.area, c.volume, c.closed ? "" : " (not closed)");
+      std::printf("    from face %u: %zu faces, area %.9g, volume %.9g%s%s%s\n", c.first_face,
+                  c.faces, c.area, c.volume, c.closed ? "" : " (not closed)",
+                  c.cavity ? " (cavity)" : "", c.inward ? " (wrong way)" : "");
   if (fix) {
     std::printf("  orientation fix     %zu faces flipped", fix->flipped);
     if (fix->conflicts) std::printf(", %zu edges could not be made consistent", fix->conflicts);
     std::printf("\n");
     for (const ComponentOrientation& c : fix->components) {
-      std::printf("    component from face %u: %zu of %zu flipped%s:", c.first_face, c.flipped,
-                  c.faces, c.closed ? ", now outward" : "");
+      std::printf(
+          "    component from face %u: %zu of %zu flipped%s:", c.first_face, c.flipped, c.faces,
+          !c.closed ? "" : (c.depth % 2 == 1 ? ", now a cavity facing in" : ", now outward"));
       for (std::uint32_t f : c.flipped_faces) std::printf(" %u", f);
       if (c.flipped > c.flipped_faces.size()) std::printf(" ...");
       std::printf("\n");

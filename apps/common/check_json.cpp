@@ -103,7 +103,8 @@ Json check_fields(const Mesh& mesh, const MeshSource& source, const Analysis& an
   // Components.
   j["components"] = r.components;
   j["closed_components"] = r.closed_components;
-  j["negative_components"] = r.negative_components;
+  j["cavity_components"] = r.cavity_components;
+  j["inward_components"] = r.inward_components;
   Json components = Json::array();
   for (std::size_t i = 0; i < r.component_list.size() && i < cap; ++i) {
     const ComponentSummary& c = r.component_list[i];
@@ -112,6 +113,9 @@ Json check_fields(const Mesh& mesh, const MeshSource& source, const Analysis& an
                               {"area", json_number(c.area)},
                               {"volume", json_number(c.volume)},
                               {"closed", c.closed},
+                              {"depth", c.depth},
+                              {"cavity", c.cavity},
+                              {"inward", c.inward},
                               {"boundary_edges", c.boundary_edges},
                               {"nonmanifold_edges", c.nonmanifold_edges},
                               {"inconsistent_edges", c.inconsistent_edges}});
@@ -129,6 +133,7 @@ Json check_fields(const Mesh& mesh, const MeshSource& source, const Analysis& an
                            {"faces", c.faces},
                            {"flipped", c.flipped},
                            {"closed", c.closed},
+                           {"depth", c.depth},
                            {"volume", json_number(c.volume)},
                            {"conflicts", c.conflicts},
                            {"flipped_faces", std::move(flipped)}});

@@ -79,6 +79,7 @@
 #include "pgamesh/mesh/topology/duplicate_faces.hpp"
 #include "pgamesh/mesh/topology/edges.hpp"
 #include "pgamesh/mesh/topology/orientation.hpp"
+#include "pgamesh/mesh/topology/shell_nesting.hpp"
 #include "pgamesh/mesh/topology/topology.hpp"
 #include "pgamesh/mesh/weld/weld.hpp"
 

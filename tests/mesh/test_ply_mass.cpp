@@ -290,7 +290,7 @@ std::vector<std::string> one(std::string s) {
   return {std::move(s)};
 }
 
-std::vector<PlyCase> cases() {
+std::vector<PlyCase> ply_cases() {
   std::vector<PlyCase> c;
   const auto mesh_case = [&](std::string name, std::function<Mesh()> make) {
     c.push_back({name, [make] { return in_every_layout(make()); }});
@@ -389,7 +389,7 @@ std::vector<PlyCase> cases() {
   return c;
 }
 
-INSTANTIATE_TEST_SUITE_P(Ply, PlyConsumers, testing::ValuesIn(cases()),
+INSTANTIATE_TEST_SUITE_P(Ply, PlyConsumers, testing::ValuesIn(ply_cases()),
                          [](const testing::TestParamInfo<PlyCase>& info) {
                            return info.param.name;
                          });

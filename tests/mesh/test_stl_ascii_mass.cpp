@@ -66,7 +66,7 @@ struct Case {
   std::function<std::string()> text;
 };
 
-const Case cases[] = {
+const Case stl_ascii_cases[] = {
     {"SmallSphere", [] { return ascii_stl(uv_sphere(1.5, 10, 16)); }},
     {"Box", [] { return ascii_stl(test::box_mesh(2, 3, 5)); }},
     {"LargeSphere", [] { return large_sphere(); }},
@@ -168,7 +168,7 @@ TEST_P(StlAsciiSums, EqualMassPropertiesOfTheReadMeshBitForBit) {
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(Texts, StlAsciiSums, ::testing::ValuesIn(cases),
+INSTANTIATE_TEST_SUITE_P(Texts, StlAsciiSums, ::testing::ValuesIn(stl_ascii_cases),
                          [](const ::testing::TestParamInfo<Case>& info) {
                            return std::string(info.param.name);
                          });
@@ -182,7 +182,7 @@ TEST(StlAsciiSums, CasesReachTheirPaths) {
     ascii_stl_mass_properties({text.data(), text.size()}, "mem.stl", source);
     return source.warnings.size();
   };
-  for (const Case& c : cases) {
+  for (const Case& c : stl_ascii_cases) {
     const std::string name = c.name;
     const std::string text = c.text();
     const bool error = name == "NaN" || name == "TruncatedInAFacet" ||

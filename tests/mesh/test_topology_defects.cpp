@@ -59,7 +59,7 @@ TEST(TopologyDefects, InwardClosedMeshIsConsistentButNegative) {
   EXPECT_TRUE(r.closed);
   EXPECT_TRUE(r.orientation_consistent);
   EXPECT_DOUBLE_EQ(r.volume, -1.0);
-  EXPECT_EQ(r.negative_components, 1u);
+  EXPECT_EQ(r.inward_components, 1u);
   const OrientationFix fix = fix_orientation(inward);
   EXPECT_EQ(fix.flipped, 12u);
   EXPECT_EQ(inward.corners, good.corners);

@@ -84,7 +84,7 @@ TEST(TopologyRealMeshes, InwardMushroomIsFlippedEntirely) {
   EXPECT_TRUE(before.closed);
   EXPECT_TRUE(before.orientation_consistent);
   EXPECT_LT(before.volume, 0.0);
-  EXPECT_EQ(before.negative_components, 1u);
+  EXPECT_EQ(before.inward_components, 1u);
   const OrientationFix fix = fix_orientation(m);
   EXPECT_EQ(fix.flipped, m.face_count());
   ASSERT_EQ(fix.components.size(), 1u);
@@ -94,7 +94,7 @@ TEST(TopologyRealMeshes, InwardMushroomIsFlippedEntirely) {
   EXPECT_TRUE(after.closed);
   EXPECT_NEAR(after.volume, -before.volume, 1e-14);
   EXPECT_NEAR(fix.components[0].volume, after.volume, 1e-14);
-  EXPECT_EQ(after.negative_components, 0u);
+  EXPECT_EQ(after.inward_components, 0u);
 }
 
 TEST(TopologyRealMeshes, InwardDodecahedronFlipsToTheClosedFormVolume) {

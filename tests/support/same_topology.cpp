@@ -72,7 +72,8 @@ void expect_same_report(const TopologyReport& a, const TopologyReport& b) {
   expect_same_edges(a.inconsistent_edge_list, b.inconsistent_edge_list);
   EXPECT_EQ(a.components, b.components);
   EXPECT_EQ(a.closed_components, b.closed_components);
-  EXPECT_EQ(a.negative_components, b.negative_components);
+  EXPECT_EQ(a.cavity_components, b.cavity_components);
+  EXPECT_EQ(a.inward_components, b.inward_components);
   ASSERT_EQ(a.component_list.size(), b.component_list.size());
   for (std::size_t i = 0; i < a.component_list.size(); ++i) {
     const ComponentSummary &x = a.component_list[i], &y = b.component_list[i];
@@ -84,6 +85,9 @@ void expect_same_report(const TopologyReport& a, const TopologyReport& b) {
     EXPECT_EQ(x.nonmanifold_edges, y.nonmanifold_edges);
     EXPECT_EQ(x.inconsistent_edges, y.inconsistent_edges);
     EXPECT_EQ(x.closed, y.closed);
+    EXPECT_EQ(x.depth, y.depth);
+    EXPECT_EQ(x.cavity, y.cavity);
+    EXPECT_EQ(x.inward, y.inward);
   }
   EXPECT_EQ(a.volume_valid, b.volume_valid);
   EXPECT_EQ(a.notes, b.notes);

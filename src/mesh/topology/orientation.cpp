@@ -9,6 +9,7 @@
 #include "pgamesh/geometry/polygon_face.hpp"
 #include "pgamesh/mesh/topology/components.hpp"
 #include "pgamesh/mesh/topology/edges.hpp"
+#include "pgamesh/mesh/topology/shell_nesting.hpp"
 #include "pgamesh/mesh/topology/topology.hpp"
 #include "pgamesh/mesh/weld/weld.hpp"
 
@@ -37,9 +38,11 @@ OrientationFix fix_orientation(Mesh& mesh, const OrientationOptions& options) {
 
   std::vector<std::uint8_t> flip(face_count, 0), seen(face_count, 0);
   std::vector<std::uint32_t> queue;
-  OrientationFix out;
+  std::vector<ComponentOrientation> reps(comps.count());
+  std::vector<std::size_t> walk_flipped(comps.count(), 0);
+  std::vector<double> area(comps.count(), 0), diagonal(comps.count(), 0);
   for (std::size_t k = 0; k < comps.count(); ++k) {
-    ComponentOrientation rep;
+    ComponentOrientation& rep = reps[k];
     rep.component = static_cast<std::uint32_t>(k);
     rep.first_face = comps.first_face[k];
     rep.faces = comps.face_count[k];
@@ -88,7 +91,7 @@ OrientationFix fix_orientation(Mesh& mesh, const OrientationOptions& options) {
       }
     }
 
-    // Signed volume with the walk's flips, about the component's bounding-box centre
+    // Signed volume and area with the walk's flips, about the component's bounding-box centre
     // (docs/conventions.md §13).
     Box3 box;
     for (std::uint32_t i = comp_start[k]; i < comp_start[k + 1]; ++i) {
@@ -97,8 +100,8 @@ OrientationFix fix_orientation(Mesh& mesh, const OrientationOptions& options) {
         box.add(mesh.vertices[mesh.corners[c]]);
     }
     const Vec3d ref = box.centre();
+    diagonal[k] = box.diagonal();
     BoundarySums sums;
-    std::size_t flipped = 0;
     for (std::uint32_t i = comp_start[k]; i < comp_start[k + 1]; ++i) {
       const std::uint32_t f = comp_faces[i];
       const std::uint32_t begin = mesh.face_offsets[f], n = mesh.face_offsets[f + 1] - begin;
@@ -107,12 +110,41 @@ OrientationFix fix_orientation(Mesh& mesh, const OrientationOptions& options) {
       });
       if (flip[f]) {
         s.volume6 = -s.volume6;
-        ++flipped;
+        ++walk_flipped[k];
       }
       sums.volume6 += s.volume6;
+      sums.area2 += s.area2;
     }
     rep.volume = body_moments(sums).volume;
-    const bool reverse_all = rep.closed ? rep.volume < 0 : 2 * flipped > rep.faces;
+    area[k] = sums.area2 / 2;
+  }
+
+  // The depth of each closed component among the others, on the faces as the walk turned them
+  // (the winding number needs each shell consistent, not outward).
+  std::vector<std::uint8_t> is_shell(comps.count(), 0);
+  for (std::size_t k = 0; k < comps.count(); ++k) is_shell[k] = reps[k].closed ? 1 : 0;
+  const std::vector<std::uint32_t> depth =
+      shell_depths(comps.face_component, is_shell, [&](std::uint32_t f, std::vector<Vec3d>& out) {
+        out.clear();
+        const std::uint32_t begin = mesh.face_offsets[f], end = mesh.face_offsets[f + 1];
+        for (std::uint32_t c = begin; c < end; ++c)
+          out.push_back(mesh.vertices[weld.representative[welded_corner[c]]]);
+        if (flip[f]) std::reverse(out.begin() + 1, out.end());
+      });
+
+  OrientationFix out;
+  for (std::size_t k = 0; k < comps.count(); ++k) {
+    ComponentOrientation& rep = reps[k];
+    // A closed shell faces the way its depth asks (docs/conventions.md §8); a rounding residue
+    // has no inside and, like an open component, keeps the orientation most of its faces had
+    // (ties: its lowest face's).
+    const ShellOrientation verdict =
+        rep.closed ? judge_shell(rep.volume, depth[k], area[k], [&] { return diagonal[k]; })
+                   : ShellOrientation::undecided;
+    rep.depth = rep.closed ? depth[k] : 0;
+    const bool reverse_all =
+        verdict == ShellOrientation::wrong ||
+        (verdict == ShellOrientation::undecided && 2 * walk_flipped[k] > rep.faces);
     if (reverse_all) {
       for (std::uint32_t i = comp_start[k]; i < comp_start[k + 1]; ++i) flip[comp_faces[i]] ^= 1;
       rep.volume = -rep.volume;

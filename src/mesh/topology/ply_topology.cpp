@@ -435,6 +435,11 @@ class PlyPass {
 
   std::uint32_t component(std::uint32_t f) const { return parent_[f]; }
 
+  // Face → component, for the nesting of closed components (valid until free_faces).
+  std::span<const std::uint32_t> face_components() const {
+    return {parent_.get(), ply_.face_count};
+  }
+
   void free_faces() {
     parent_.reset();
     std::vector<bool>().swap(collapsed_);
@@ -503,7 +508,13 @@ std::optional<WeldedTriangleProps> plain_ply_props(std::span<const char> bytes,
   std::vector<detail::OddEdge>& odd = pass.edges.odd;
   std::vector<std::uint32_t> odd_component(odd.size());
   for (std::size_t i = 0; i < odd.size(); ++i) odd_component[i] = pass.component(odd[i].face);
-  pass.free_faces();
+  // One component has no nesting to find: free the faces' arrays now. With several, finish_report
+  // reads face → component once more (4 bytes a face, docs/conventions.md §8).
+  const bool several_components = tally.components.size() > 1;
+  if (several_components)
+    tally.face_component = pass.face_components();
+  else
+    pass.free_faces();
 
   // The rest of the report reads positions as doubles and the corners of a few faces (boundary
   // sides, duplicated faces) from the file.
@@ -527,6 +538,7 @@ std::optional<WeldedTriangleProps> plain_ply_props(std::span<const char> bytes,
   }
   detail::finish_report(tally, pass.edges.duplicates,
                         trace_boundary_loops(sides, tails, heads, positions, reference));
+  if (several_components) pass.free_faces();
 
   source = MeshSource{};
   source.path = name;

@@ -7,9 +7,11 @@
 #include <stdexcept>
 #include <string>
 
+#include "pgamesh/core/bounding_box.hpp"
 #include "pgamesh/geometry/carrier.hpp"
 #include "pgamesh/geometry/gap.hpp"
 #include "pgamesh/geometry/polygon_face.hpp"
+#include "pgamesh/mesh/topology/shell_nesting.hpp"
 
 namespace pgamesh::detail {
 
@@ -47,10 +49,11 @@ void write_notes(TopologyReport& r) {
     r.notes.push_back("non-manifold: " + n(r.nonmanifold_edges) +
                       " edges are shared by more than two faces; the volume is the sum over the "
                       "pieces that meet there");
-  if (r.negative_components > 0)
-    r.notes.push_back("inward: " + n(r.negative_components) +
-                      " closed components have negative volume (faces oriented inward; "
-                      "--fix-orientation makes them outward)");
+  if (r.inward_components > 0)
+    r.notes.push_back("inward: " + n(r.inward_components) +
+                      " closed components face the wrong way for their nesting (an outer skin or "
+                      "island with negative volume, or a cavity with positive volume; "
+                      "--fix-orientation reverses them)");
   if (r.zero_area_faces + r.small_area_faces > 0)
     r.notes.push_back("degenerate faces: " + n(r.zero_area_faces) + " with zero area, " +
                       n(r.small_area_faces) + " nearly zero; they do not change area or volume");
@@ -219,6 +222,7 @@ void add_component_triangle(TopologyTally& t, std::uint32_t component,
 }
 
 void tally_component_sums(TopologyTally& t, std::span<const std::uint32_t> face_component) {
+  t.face_component = face_component;
   if (start_component_sums(t)) return;
   for (std::size_t f = 0; f < face_component.size(); ++f) {
     const std::uint32_t k = face_component[f];
@@ -299,13 +303,42 @@ void finish_report(TopologyTally& t,
              r.inconsistent_edges == 0;
 
   r.components = t.components.size();
+  std::vector<std::uint8_t> is_shell(t.components.size(), 0);
   for (std::size_t k = 0; k < t.components.size(); ++k) {
     ComponentSummary& s = t.components[k];
     s.area = t.area2[k] / 2;
     s.volume = t.volume6[k] / 6;
     s.closed = s.boundary_edges == 0 && s.nonmanifold_edges == 0 && s.inconsistent_edges == 0;
+    is_shell[k] = s.closed ? 1 : 0;
     if (s.closed) ++r.closed_components;
-    if (s.closed && s.volume < 0) ++r.negative_components;
+  }
+  // Orientation by nesting (docs/conventions.md §8): the volumes are about the reference point,
+  // the centre of the box of every vertex, so that box's diagonal bounds the apex distances.
+  const std::vector<std::uint32_t> depth =
+      shell_depths(t.face_component, is_shell, [&](std::uint32_t f, std::vector<Vec3d>& out) {
+        out.clear();
+        for (std::uint32_t c = t.mesh.begin(f), end = c + t.mesh.size(f); c < end; ++c)
+          out.push_back(t.mesh.corner_position(c));
+      });
+  double mesh_diagonal = -1;  // computed at the first shell that needs it
+  auto diagonal = [&] {
+    if (mesh_diagonal < 0) {
+      Box3 box;
+      for (const Vec3d& p : t.mesh.positions) box.add(p);
+      mesh_diagonal = box.diagonal();
+    }
+    return mesh_diagonal;
+  };
+  for (std::size_t k = 0; k < t.components.size(); ++k) {
+    ComponentSummary& s = t.components[k];
+    if (s.closed) {
+      s.depth = depth[k];
+      // A residue encloses nothing: at odd depth it is not a cavity.
+      s.cavity = s.depth % 2 == 1 && std::abs(s.volume) > volume_residue_bound(s.area, diagonal());
+      s.inward = judge_shell(s.volume, s.depth, s.area, diagonal) == ShellOrientation::wrong;
+      if (s.cavity) ++r.cavity_components;
+      if (s.inward) ++r.inward_components;
+    }
     if (k < t.cap) r.component_list.push_back(s);
   }
 

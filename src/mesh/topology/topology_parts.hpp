@@ -52,7 +52,10 @@ struct TopologyTally {
   double area_threshold;
   std::vector<ComponentSummary> components;  // first_face and faces filled by the caller
   std::vector<double> area2, volume6;        // per component, Σ ‖F‖ and Σ o ∨ F
-  BoundarySums total;                        // only the surface parts: area2, carrier_sum, volume6
+  // Face → component (no_edge: none), kept by tally_component_sums for the nesting of closed
+  // components in finish_report; a pass that keeps no corner array sets it itself.
+  std::span<const std::uint32_t> face_component;
+  BoundarySums total;  // only the surface parts: area2, carrier_sum, volume6
 };
 
 // Throws std::invalid_argument for a bad option.
@@ -90,7 +93,8 @@ void add_component_triangle(TopologyTally& t, std::uint32_t component,
 void tally_edge(TopologyTally& t, std::uint32_t v0, std::uint32_t v1, std::uint32_t face,
                 std::size_t uses, std::size_t forward, std::uint32_t component);
 
-// After every face and edge: totals, gap and volume range, closedness, components, the duplicated
+// After every face and edge: totals, gap and volume range, closedness, components and their
+// nesting (t.face_component must still be alive when two or more are closed), the duplicated
 // faces (face, earlier face with the same vertices; ascending by face), the boundary loops and the
 // notes.
 void finish_report(TopologyTally& t,

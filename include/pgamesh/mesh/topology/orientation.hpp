@@ -1,5 +1,6 @@
 // Repairing face orientation: make every face agree with its neighbours, then turn each closed
-// component outward (positive signed volume, docs/conventions.md §8).
+// component the way its nesting asks — outward at even depth, inward in a cavity (odd depth)
+// (docs/conventions.md §8, orientation by nesting).
 #pragma once
 
 #include <cstddef>
@@ -22,7 +23,9 @@ struct ComponentOrientation {
   std::size_t flipped = 0;                   // faces of this component that were reversed
   std::vector<std::uint32_t> flipped_faces;  // the first list_cap of them, ascending
   bool closed = false;        // closed after the repair (every edge two opposite uses)
-  double volume = 0;          // signed volume after the repair (closed components: ≥ 0)
+  std::uint32_t depth = 0;    // closed: the closed components around it (odd: a cavity)
+  double volume = 0;          // signed volume after the repair (closed: > 0 at even depth, < 0
+                              // at odd depth, unless a rounding residue)
   std::size_t conflicts = 0;  // manifold edges that could not be made consistent (non-orientable)
 };
 
@@ -34,11 +37,13 @@ struct OrientationFix {
 
 // Reverses faces of `mesh` in place (a face keeps its first corner, the others reverse order).
 // In each component, a breadth-first walk from its lowest face across manifold edges (exactly two
-// uses) orients every face against its neighbour. A closed component is then made outward: if its
-// signed volume, accumulated with body_moments' add_triangle about the component's bounding-box
-// centre, is negative, all its faces are reversed. An open component has no inside; it keeps the
-// orientation that the majority of its faces had (ties: its lowest face's). The report lists, per
-// component, exactly the faces whose corner order changed.
+// uses) orients every face against its neighbour. A closed component is then turned the way its
+// depth among the other closed components asks (shell_nesting.hpp): its signed volume, summed
+// about the component's bounding-box centre, must be positive at even depth and negative at odd
+// depth; if it has the other sign beyond the rounding residue bound, all its faces are reversed.
+// An open component or a residue has no inside; it keeps the orientation that the majority of its
+// faces had (ties: its lowest face's). The report lists, per component, exactly the faces whose
+// corner order changed.
 OrientationFix fix_orientation(Mesh& mesh, const OrientationOptions& options = {});
 
 }  // namespace pgamesh

@@ -47,6 +47,13 @@ struct ComponentSummary {
   std::size_t nonmanifold_edges = 0;
   std::size_t inconsistent_edges = 0;
   bool closed = false;  // no boundary, non-manifold or inconsistent edge
+  // Closed components only (docs/conventions.md §8, orientation by nesting): how many other closed
+  // components enclose it (odd: a cavity, which should face inward), and whether its volume has
+  // the sign its depth forbids beyond the rounding residue bound (a defect --fix-orientation
+  // repairs).
+  std::uint32_t depth = 0;
+  bool cavity = false;  // closed, at odd depth, and not a rounding residue
+  bool inward = false;  // closed and oriented against its depth
 };
 
 struct TopologyReport {
@@ -93,7 +100,8 @@ struct TopologyReport {
   // Components (edge-connected after the weld; collapsed faces belong to none).
   std::size_t components = 0;
   std::size_t closed_components = 0;
-  std::size_t negative_components = 0;  // closed components with negative volume (inward)
+  std::size_t cavity_components = 0;  // ComponentSummary::cavity
+  std::size_t inward_components = 0;  // closed components oriented against their depth (inward)
   std::vector<ComponentSummary> component_list;
 
   // Whether volume, centre of mass and inertia are meaningful: no boundary, consistent
