@@ -35,10 +35,10 @@ bool all_finite(const Mat3& m) {
   return true;
 }
 
-// Coordinates so large that the area, the volume or the inertia overflow a double (|x| around
-// 1e103 and up: inertia grows as the fifth power of the size) give inf or nan, which no output
-// may print as a result: the analysis is refused, naming the file. The centre of mass and the
-// inertia are undefined (nan) when the volume is 0, so they are judged only when it is not.
+// Coordinates so large that the area, the volume or the inertia overflow a double (a part of size
+// around 1e61 and up: inertia grows as the fifth power of the size) give inf or nan, which no
+// output may print as a result: the analysis is refused, naming the file. The centre of mass and
+// the inertia are undefined (nan) when the volume is 0, so they are judged only when it is not.
 void refuse_overflow(const Analysis& r) {
   const MassProperties& m = r.mass;
   const bool finite =

@@ -34,7 +34,7 @@ TEST(OverflowRefusal, CubeOfSide1e120) {
   expect_refused(cube_obj(1e120, 1e120));
 }
 
-TEST(OverflowRefusal, CubeWhoseInertiaAloneOverflows) {
+TEST(OverflowRefusal, CubeOfSide1e100) {
   // volume 1e300 fits, the inertia side⁵/6 = 1.7e499 does not.
   expect_refused(cube_obj(1e100));
 }
