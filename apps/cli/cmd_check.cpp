@@ -18,6 +18,7 @@
 #include "pgamesh/io/write_mesh.hpp"
 #include "pgamesh/mesh/topology/orientation.hpp"
 #include "pgamesh/mesh/topology/topology.hpp"
+#include "text_append.hpp"
 
 namespace pgamesh::cli {
 
@@ -27,95 +28,97 @@ const char* yes_no(bool b) {
   return b ? "yes" : "no";
 }
 
-void print_vec(Vec3d v) {
-  std::printf("(%.9g, %.9g, %.9g)", v.x, v.y, v.z);
+void print_vec(std::string& out, Vec3d v) {
+  append(out, "(%.9g, %.9g, %.9g)", v.x, v.y, v.z);
 }
 
-void print_readable(const Mesh& mesh, const MeshSource& source, const Analysis& analysis,
-                    const OrientationFix* fix, std::size_t cap) {
+// The readable report, built whole before anything is printed.
+std::string readable_report(const Mesh& mesh, const MeshSource& source, const Analysis& analysis,
+                            const OrientationFix* fix, std::size_t cap) {
+  std::string out;
   const TopologyReport& r = *analysis.topology;
-  std::printf("%s (%s)\n", source.path.c_str(), format_name(source.format));
-  std::printf("  faces               %zu (%zu triangles)\n", r.faces, r.triangles);
-  std::printf("  vertices            %zu welded from %zu (%zu merged", r.vertices, r.input_vertices,
-              r.merged_vertices);
+  append(out, "%s (%s)\n", source.path.c_str(), format_name(source.format));
+  append(out, "  faces               %zu (%zu triangles)\n", r.faces, r.triangles);
+  append(out, "  vertices            %zu welded from %zu (%zu merged", r.vertices, r.input_vertices,
+         r.merged_vertices);
   if (r.weld_tolerance > 0)
-    std::printf(", tolerance %.6g, moved at most %.6g", r.weld_tolerance, r.weld_max_moved);
-  std::printf(")\n");
-  std::printf("  edges               %zu: %zu boundary, %zu non-manifold, %zu inconsistent\n",
-              r.edges, r.boundary_edges, r.nonmanifold_edges, r.inconsistent_edges);
-  std::printf("  closed              %s\n", yes_no(r.closed));
-  std::printf("  orientation         %s\n",
-              r.orientation_consistent ? "consistent" : "INCONSISTENT");
-  std::printf("  area                %.17g\n", r.area);
-  std::printf("  volume              %.17g%s\n", r.volume,
-              analysis.volume_valid.value_or(false) ? "" : "   (NOT MEANINGFUL: see notes)");
-  std::printf("  gap area            %.17g\n", r.gap_area);
+    append(out, ", tolerance %.6g, moved at most %.6g", r.weld_tolerance, r.weld_max_moved);
+  append(out, ")\n");
+  append(out, "  edges               %zu: %zu boundary, %zu non-manifold, %zu inconsistent\n",
+         r.edges, r.boundary_edges, r.nonmanifold_edges, r.inconsistent_edges);
+  append(out, "  closed              %s\n", yes_no(r.closed));
+  append(out, "  orientation         %s\n",
+         r.orientation_consistent ? "consistent" : "INCONSISTENT");
+  append(out, "  area                %.17g\n", r.area);
+  append(out, "  volume              %.17g%s\n", r.volume,
+         analysis.volume_valid.value_or(false) ? "" : "   (NOT MEANINGFUL: see notes)");
+  append(out, "  gap area            %.17g\n", r.gap_area);
   if (r.boundary_edges > 0) {
-    std::printf("  volume if capped    %.17g .. %.17g (ambiguity %.6g)\n", r.volume_min,
-                r.volume_max, r.volume_ambiguity());
-    std::printf("  boundary loops      %zu, total area %.17g\n", r.boundary_loops.size(),
-                r.loops_area);
+    append(out, "  volume if capped    %.17g .. %.17g (ambiguity %.6g)\n", r.volume_min,
+           r.volume_max, r.volume_ambiguity());
+    append(out, "  boundary loops      %zu, total area %.17g\n", r.boundary_loops.size(),
+           r.loops_area);
     for (std::size_t i = 0; i < r.boundary_loops.size() && i < cap; ++i) {
       const BoundaryLoop& l = r.boundary_loops[i];
-      std::printf("    loop %zu: %zu edges%s, perimeter %.9g, area %.9g, vector area ", i + 1,
-                  l.half_edges.size(), l.closed ? "" : " (open chain)", l.perimeter, l.area);
-      print_vec(l.vector_area);
-      std::printf(", from ");
-      print_vec(mesh.vertices[mesh.corners[l.half_edges.front()]]);
-      std::printf("\n");
+      append(out, "    loop %zu: %zu edges%s, perimeter %.9g, area %.9g, vector area ", i + 1,
+             l.half_edges.size(), l.closed ? "" : " (open chain)", l.perimeter, l.area);
+      print_vec(out, l.vector_area);
+      append(out, ", from ");
+      print_vec(out, mesh.vertices[mesh.corners[l.half_edges.front()]]);
+      append(out, "\n");
     }
-    if (r.boundary_loops.size() > cap) std::printf("    ...\n");
+    if (r.boundary_loops.size() > cap) append(out, "    ...\n");
   }
   auto edges = [&](const char* what, const std::vector<EdgeLocation>& list, std::size_t count) {
     if (count == 0) return;
-    std::printf("  %s edges (%zu):\n", what, count);
+    append(out, "  %s edges (%zu):\n", what, count);
     for (const EdgeLocation& e : list) {
-      std::printf("    face %u, vertices %u-%u ", e.face, e.vertex0, e.vertex1);
-      print_vec(e.p0);
-      std::printf(" - ");
-      print_vec(e.p1);
-      std::printf(", %u faces\n", e.face_count);
+      append(out, "    face %u, vertices %u-%u ", e.face, e.vertex0, e.vertex1);
+      print_vec(out, e.p0);
+      append(out, " - ");
+      print_vec(out, e.p1);
+      append(out, ", %u faces\n", e.face_count);
     }
-    if (count > list.size()) std::printf("    ...\n");
+    if (count > list.size()) append(out, "    ...\n");
   };
   edges("non-manifold", r.nonmanifold_edge_list, r.nonmanifold_edges);
   edges("inconsistent", r.inconsistent_edge_list, r.inconsistent_edges);
   auto faces = [&](const char* what, const std::vector<FaceLocation>& list, std::size_t count) {
     if (count == 0) return;
-    std::printf("  %s faces (%zu):\n", what, count);
+    append(out, "  %s faces (%zu):\n", what, count);
     for (const FaceLocation& f : list) {
-      std::printf("    face %u", f.face);
-      if (f.same_as != no_edge) std::printf(" = face %u", f.same_as);
-      std::printf(" at ");
-      print_vec(f.centroid);
-      std::printf(", area %.6g\n", f.area);
+      append(out, "    face %u", f.face);
+      if (f.same_as != no_edge) append(out, " = face %u", f.same_as);
+      append(out, " at ");
+      print_vec(out, f.centroid);
+      append(out, ", area %.6g\n", f.area);
     }
-    if (count > list.size()) std::printf("    ...\n");
+    if (count > list.size()) append(out, "    ...\n");
   };
   faces("zero-area", r.zero_area_list, r.zero_area_faces);
   faces("nearly zero-area", r.small_area_list, r.small_area_faces);
   faces("duplicated", r.duplicated_list, r.duplicated_faces);
-  std::printf("  components          %zu (%zu closed", r.components, r.closed_components);
+  append(out, "  components          %zu (%zu closed", r.components, r.closed_components);
   if (r.cavity_components)
-    std::printf(", %zu %s", r.cavity_components, r.cavity_components == 1 ? "cavity" : "cavities");
-  if (r.inward_components) std::printf(", %zu inward", r.inward_components);
-  std::printf(")\n");
+    append(out, ", %zu %s", r.cavity_components, r.cavity_components == 1 ? "cavity" : "cavities");
+  if (r.inward_components) append(out, ", %zu inward", r.inward_components);
+  append(out, ")\n");
   if (r.components > 1)
     for (const ComponentSummary& c : r.component_list)
-      std::printf("    from face %u: %zu faces, area %.9g, volume %.9g%s%s%s\n", c.first_face,
-                  c.faces, c.area, c.volume, c.closed ? "" : " (not closed)",
-                  c.cavity ? " (cavity)" : "", c.inward ? " (wrong way)" : "");
+      append(out, "    from face %u: %zu faces, area %.9g, volume %.9g%s%s%s\n", c.first_face,
+             c.faces, c.area, c.volume, c.closed ? "" : " (not closed)", c.cavity ? " (cavity)" : "",
+             c.inward ? " (wrong way)" : "");
   if (fix) {
-    std::printf("  orientation fix     %zu faces flipped", fix->flipped);
-    if (fix->conflicts) std::printf(", %zu edges could not be made consistent", fix->conflicts);
-    std::printf("\n");
+    append(out, "  orientation fix     %zu faces flipped", fix->flipped);
+    if (fix->conflicts) append(out, ", %zu edges could not be made consistent", fix->conflicts);
+    append(out, "\n");
     for (const ComponentOrientation& c : fix->components) {
-      std::printf(
-          "    component from face %u: %zu of %zu flipped%s:", c.first_face, c.flipped, c.faces,
-          !c.closed ? "" : (c.depth % 2 == 1 ? ", now a cavity facing in" : ", now outward"));
-      for (std::uint32_t f : c.flipped_faces) std::printf(" %u", f);
-      if (c.flipped > c.flipped_faces.size()) std::printf(" ...");
-      std::printf("\n");
+      append(out, "    component from face %u: %zu of %zu flipped%s:", c.first_face, c.flipped,
+             c.faces,
+             !c.closed ? "" : (c.depth % 2 == 1 ? ", now a cavity facing in" : ", now outward"));
+      for (std::uint32_t f : c.flipped_faces) append(out, " %u", f);
+      if (c.flipped > c.flipped_faces.size()) append(out, " ...");
+      append(out, "\n");
     }
   }
   // The topology's notes, then the reasons the volume is not valid that they do not already give.
@@ -123,10 +126,11 @@ void print_readable(const Mesh& mesh, const MeshSource& source, const Analysis& 
   for (const auto& reason : analysis.reasons)
     if (std::find(notes.begin(), notes.end(), reason) == notes.end()) notes.push_back(reason);
   if (!notes.empty()) {
-    std::printf("notes:\n");
-    for (const auto& n : notes) std::printf("  - %s\n", n.c_str());
+    append(out, "notes:\n");
+    for (const auto& n : notes) append(out, "  - %s\n", n.c_str());
   }
-  for (const auto& w : analysis.warnings) std::printf("warning: %s\n", w.c_str());
+  for (const auto& w : analysis.warnings) append(out, "warning: %s\n", w.c_str());
+  return out;
 }
 
 struct CheckOptions {
@@ -161,27 +165,31 @@ int run_check(const CheckOptions& o) {
     AnalysisOptions analysis_options;
     analysis_options.topology_options = options;
     const Analysis analysis = analyze_mesh(mesh, source, analysis_options);
+    const MeshFormat output_format =
+        output.empty() ? MeshFormat::unknown : format_for_extension(output, source.format);
     if (!output.empty()) {
-      const MeshFormat format = format_for_extension(output, source.format);
-      if (format == MeshFormat::unknown) {
+      if (output_format == MeshFormat::unknown) {
         std::fprintf(stderr,
                      "pgamesh check: cannot tell the format of '%s' (use .stl, .obj, .ply or "
                      ".off)\n",
                      output.c_str());
         return 2;
       }
-      write_mesh(mesh, output, format);
     }
+    // The report is built before the repaired mesh is written (atomically, write_mesh), and
+    // printed after: a failure at any step leaves stdout empty.
+    std::string out;
     if (json) {
       CheckJsonOptions jo;
       jo.list_cap = options.list_cap;
       jo.loop_point_cap = options.list_cap;
-      const std::string doc = check_json(mesh, source, analysis, fix ? &repair : nullptr, jo);
-      std::fwrite(doc.data(), 1, doc.size(), stdout);
+      out = check_json(mesh, source, analysis, fix ? &repair : nullptr, jo);
     } else {
-      print_readable(mesh, source, analysis, fix ? &repair : nullptr, options.list_cap);
-      if (!output.empty()) std::printf("wrote %s\n", output.c_str());
+      out = readable_report(mesh, source, analysis, fix ? &repair : nullptr, options.list_cap);
+      if (!output.empty()) append(out, "wrote %s\n", output.c_str());
     }
+    if (!output.empty()) write_mesh(mesh, output, output_format);
+    std::fwrite(out.data(), 1, out.size(), stdout);
     return 0;
   } catch (const InputError& e) {
     std::fprintf(stderr, "pgamesh check: %s\n", e.what());

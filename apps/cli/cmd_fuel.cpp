@@ -18,6 +18,7 @@
 #include "commands.hpp"
 #include "fuel_json.hpp"
 #include "json_text.hpp"
+#include "pgamesh/analysis/analyze.hpp"
 #include "pgamesh/core/input_error.hpp"
 #include "pgamesh/io/mesh_format.hpp"
 #include "pgamesh/io/read_mesh.hpp"
@@ -26,6 +27,7 @@
 #include "pgamesh/tank/fuel_index.hpp"
 #include "pgamesh/tank/fuel_sweep.hpp"
 #include "pgamesh/tank/inverse_level.hpp"
+#include "text_append.hpp"
 
 namespace pgamesh::cli {
 
@@ -123,10 +125,10 @@ struct TankCheck {
 
 // The tank's fields of the document: the same names as `pgamesh props` and `pgamesh check` for the
 // same things (docs/json.md).
-void write_header(Json& w, const Options& o, const MeshSource& source, const Mesh& mesh,
+void write_header(Json& w, const Options& o, const Analysis& analysis, const Mesh& mesh,
                   const tank::Tank& t, const TankCheck& check, double density) {
   w["file"] = o.file;
-  w["format"] = format_name(source.format);
+  w["format"] = format_name(analysis.format);
   w["triangles"] = t.triangles.size();
   w["faces"] = mesh.face_count();
   w["tank_volume"] = json_number(t.volume);
@@ -143,7 +145,7 @@ void write_header(Json& w, const Options& o, const MeshSource& source, const Mes
   w["volume_valid"] = check.fit;
   w["reasons"] = json_strings(check.problems);
   w["forced"] = check.forced;
-  w["warnings"] = json_strings(source.warnings);
+  w["warnings"] = json_strings(analysis.warnings);
   w["conventions"] = fuel_conventions();
 }
 
@@ -155,21 +157,22 @@ void write_attitude(Json& w, const Options& o, const Attitude& a) {
   }
 }
 
-void print_state(const tank::FuelState& st, const tank::LevelRange& range, double density) {
-  std::printf("  level           %s (tank from %s to %s along up)\n", fmt(st.plane.level).c_str(),
-              fmt(range.lowest).c_str(), fmt(range.highest).c_str());
-  std::printf("  volume          %s (fraction %s), ullage %s\n", fmt(st.volume).c_str(),
-              fmt(st.fraction).c_str(), fmt(st.ullage_volume).c_str());
+void print_state(std::string& out, const tank::FuelState& st, const tank::LevelRange& range,
+                 double density) {
+  append(out, "  level           %s (tank from %s to %s along up)\n", fmt(st.plane.level).c_str(),
+         fmt(range.lowest).c_str(), fmt(range.highest).c_str());
+  append(out, "  volume          %s (fraction %s), ullage %s\n", fmt(st.volume).c_str(),
+         fmt(st.fraction).c_str(), fmt(st.ullage_volume).c_str());
   if (density != 1)
-    std::printf("  mass            %s (density %s)\n", fmt(density * st.volume).c_str(),
-                fmt(density).c_str());
+    append(out, "  mass            %s (density %s)\n", fmt(density * st.volume).c_str(),
+           fmt(density).c_str());
   if (st.has_center)
-    std::printf("  centre of mass  %s %s %s\n", fmt(st.center_of_mass.x).c_str(),
-                fmt(st.center_of_mass.y).c_str(), fmt(st.center_of_mass.z).c_str());
-  std::printf("  wetted area     %s\n", fmt(st.wetted_area).c_str());
-  std::printf("  free surface    %s, moments of area: transverse %s, longitudinal %s\n",
-              fmt(st.surface_area).c_str(), fmt(st.surface.second[1]).c_str(),
-              fmt(st.surface.second[0]).c_str());
+    append(out, "  centre of mass  %s %s %s\n", fmt(st.center_of_mass.x).c_str(),
+           fmt(st.center_of_mass.y).c_str(), fmt(st.center_of_mass.z).c_str());
+  append(out, "  wetted area     %s\n", fmt(st.wetted_area).c_str());
+  append(out, "  free surface    %s, moments of area: transverse %s, longitudinal %s\n",
+         fmt(st.surface_area).c_str(), fmt(st.surface.second[1]).c_str(),
+         fmt(st.surface.second[0]).c_str());
 }
 
 // The tank must be fit for gauging (tank::tank_fitness, the rule the viewer applies too): refused
@@ -201,6 +204,12 @@ TankCheck check_tank(const Options& o, const Mesh& mesh, const tank::Tank& t) {
 int run(const Options& o) {
   MeshSource source;
   const Mesh mesh = read_mesh(o.file, &source);
+  // The front door's reading of the mesh, for what it says of every file (the reader's repairs,
+  // float32 precision) and its refusal of coordinates whose figures overflow; the tank's fitness
+  // is tank::tank_fitness's rule below.
+  AnalysisOptions analysis_options;
+  analysis_options.topology = false;
+  const Analysis analysis = analyze_mesh(mesh, source, analysis_options);
   tank::Tank t;
   try {
     t = tank::make_tank(mesh);
@@ -219,18 +228,24 @@ int run(const Options& o) {
   const std::vector<Attitude> atts = attitudes(o);
   const bool grid = atts.size() > 1;
   const bool tty = isatty(fileno(stderr));
+  // Everything for stdout is built here and printed only once the command has succeeded: a
+  // level outside the tank or a volume it cannot hold leaves stdout empty, never half a table.
+  std::string out;
   // The document: the tank's fields, then one attitude's (or "attitudes", one object each).
   Json doc;
-  write_header(doc, o, source, mesh, t, check, density);
+  write_header(doc, o, analysis, mesh, t, check, density);
   if (grid) doc["attitudes"] = Json::array();
   if (o.csv) {
-    std::printf(
-        "# pgamesh fuel: %s\n# fuel is up.x <= level (up a unit vector, tank frame x "
-        "forward, y left, z up); ullage_length = highest point - level\n"
-        "# units: lengths in the mesh unit L, areas L^2, volumes L^3, moments of area "
-        "L^4; mass = density x volume in the unit of the density times L^3\n"
-        "# density %.17g\n# tank_volume %.17g\n",
-        o.file.c_str(), density, t.volume);
+    append(out,
+           "# pgamesh fuel: %s\n# fuel is up.x <= level (up a unit vector, tank frame x "
+           "forward, y left, z up); ullage_length = highest point - level\n"
+           "# units: lengths in the mesh unit L, areas L^2, volumes L^3, moments of area "
+           "L^4; mass = density x volume in the unit of the density times L^3\n"
+           "# density %.17g\n# tank_volume %.17g\n",
+           o.file.c_str(), density, t.volume);
+    // A forced table says so inside the file, where it travels with the figures.
+    for (const auto& problem : check.problems)
+      append(out, "# warning: forced (--force), not a valid tank: %s\n", problem.c_str());
   }
   const bool csv_attitude = o.attitude || grid;
   std::unique_ptr<tank::FuelIndex> index;
@@ -240,13 +255,12 @@ int run(const Options& o) {
     Json attitude_fields;
     Json& w = grid ? attitude_fields : doc;
     if (o.csv && (ai == 0 || grid))
-      std::printf(
-          "# up %.17g,%.17g,%.17g%s\n", a.up.x, a.up.y, a.up.z,
-          o.attitude ? (" pitch " + fmt(a.pitch_deg) + " roll " + fmt(a.roll_deg)).c_str() : "");
+      append(out, "# up %.17g,%.17g,%.17g%s\n", a.up.x, a.up.y, a.up.z,
+             o.attitude ? (" pitch " + fmt(a.pitch_deg) + " roll " + fmt(a.roll_deg)).c_str() : "");
     write_attitude(w, o, a);
     if (!o.json && !o.csv)
-      std::printf(
-          "%s: up %s %s %s%s\n", o.file.c_str(), fmt(a.up.x).c_str(), fmt(a.up.y).c_str(),
+      append(
+          out, "%s: up %s %s %s%s\n", o.file.c_str(), fmt(a.up.x).c_str(), fmt(a.up.y).c_str(),
           fmt(a.up.z).c_str(),
           o.attitude
               ? (" (pitch " + fmt(a.pitch_deg) + " deg, roll " + fmt(a.roll_deg) + " deg)").c_str()
@@ -264,14 +278,13 @@ int run(const Options& o) {
         }
         const tank::FuelState st = tank::fuel_naive(t, tank::FuelPlane{a.up, o.value});
         if (o.csv) {
-          if (ai == 0) std::printf("%s\n", fuel_csv_columns(csv_attitude).c_str());
-          std::printf(
-              "%s\n",
-              fuel_csv_row(st, range, csv_attitude, a.pitch_deg, a.roll_deg, density).c_str());
+          if (ai == 0) append(out, "%s\n", fuel_csv_columns(csv_attitude).c_str());
+          append(out, "%s\n",
+                 fuel_csv_row(st, range, csv_attitude, a.pitch_deg, a.roll_deg, density).c_str());
         } else if (o.json) {
           write_fuel_state(w, st, range, density);
         } else {
-          print_state(st, range, density);
+          print_state(out, st, range, density);
         }
         break;
       }
@@ -288,14 +301,13 @@ int run(const Options& o) {
         }
         Json rows = Json::array();
         if (o.csv && (ai == 0))
-          std::printf("target_volume,iterations,%s\n", fuel_csv_columns(csv_attitude).c_str());
+          append(out, "target_volume,iterations,%s\n", fuel_csv_columns(csv_attitude).c_str());
         for (double v : targets) {
           const tank::LevelSolution s = tank::level_for_volume(*index, a.up, v);
           const tank::FuelState st = index->query(tank::FuelPlane{a.up, s.level});
           if (o.csv) {
-            std::printf(
-                "%.17g,%d,%s\n", v, s.iterations,
-                fuel_csv_row(st, range, csv_attitude, a.pitch_deg, a.roll_deg, density).c_str());
+            append(out, "%.17g,%d,%s\n", v, s.iterations,
+                   fuel_csv_row(st, range, csv_attitude, a.pitch_deg, a.roll_deg, density).c_str());
           } else if (o.json) {
             Json row;
             Json& target = o.query == Options::Query::volumes ? row : w;
@@ -304,8 +316,8 @@ int run(const Options& o) {
             write_fuel_state(target, st, range, density);
             if (o.query == Options::Query::volumes) rows.push_back(std::move(row));
           } else {
-            std::printf("  target volume   %s (%d fuel queries)\n", fmt(v).c_str(), s.iterations);
-            print_state(st, range, density);
+            append(out, "  target volume   %s (%d fuel queries)\n", fmt(v).c_str(), s.iterations);
+            print_state(out, st, range, density);
           }
         }
         if (o.json && o.query == Options::Query::volumes) w["rows"] = std::move(rows);
@@ -320,11 +332,10 @@ int run(const Options& o) {
         });
         if (show) std::fprintf(stderr, "\n");
         if (o.csv) {
-          if (ai == 0) std::printf("%s\n", fuel_csv_columns(csv_attitude).c_str());
+          if (ai == 0) append(out, "%s\n", fuel_csv_columns(csv_attitude).c_str());
           for (const auto& st : rows)
-            std::printf(
-                "%s\n",
-                fuel_csv_row(st, range, csv_attitude, a.pitch_deg, a.roll_deg, density).c_str());
+            append(out, "%s\n",
+                   fuel_csv_row(st, range, csv_attitude, a.pitch_deg, a.roll_deg, density).c_str());
         } else if (o.json) {
           Json& out = w["rows"] = Json::array();
           for (const auto& st : rows) {
@@ -333,12 +344,12 @@ int run(const Options& o) {
             out.push_back(std::move(row));
           }
         } else {
-          std::printf("  %-14s %-14s %-10s %-14s %-14s\n", "level", "volume", "fraction",
-                      "free surface", "wetted area");
+          append(out, "  %-14s %-14s %-10s %-14s %-14s\n", "level", "volume", "fraction",
+                 "free surface", "wetted area");
           for (const auto& st : rows)
-            std::printf("  %-14s %-14s %-10s %-14s %-14s\n", fmt(st.plane.level).c_str(),
-                        fmt(st.volume).c_str(), fmt(st.fraction).c_str(),
-                        fmt(st.surface_area).c_str(), fmt(st.wetted_area).c_str());
+            append(out, "  %-14s %-14s %-10s %-14s %-14s\n", fmt(st.plane.level).c_str(),
+                   fmt(st.volume).c_str(), fmt(st.fraction).c_str(), fmt(st.surface_area).c_str(),
+                   fmt(st.wetted_area).c_str());
         }
         break;
       }
@@ -351,7 +362,11 @@ int run(const Options& o) {
   }
   if (tty && grid && !o.json && (o.csv || o.query == Options::Query::table))
     std::fprintf(stderr, "\n");
-  if (o.json) std::printf("%s\n", json_text(doc).c_str());
+  if (o.json) out += json_text(doc) + "\n";
+  std::fwrite(out.data(), 1, out.size(), stdout);
+  if (!o.json)  // the JSON carries them in "warnings"
+    for (const auto& warning : analysis.warnings)
+      std::fprintf(stderr, "%s: warning: %s\n", o.file.c_str(), warning.c_str());
   return 0;
 }
 
@@ -415,11 +430,12 @@ void add_fuel_command(CLI::App& app) {
                       "up = -accel/|accel|; replaces --up, --pitch and --roll")
                  ->type_name("AX,AY,AZ")
                  ->group(attitude);
-  add_number(*sub, "--density", o.density, "mass per unit volume (default 1: mass = volume)")
+  add_positive_number(*sub, "--density", o.density,
+                      "mass per unit volume (default 1: mass = volume)")
       ->type_name("RHO")
       ->group(mass);
-  add_number(*sub, "--mass", o.mass,
-             "mass of the full tank instead; the density is M / tank volume")
+  add_positive_number(*sub, "--mass", o.mass,
+                      "mass of the full tank instead; the density is M / tank volume")
       ->type_name("M")
       ->group(mass);
   sub->add_flag("--json", o.json, "one JSON object on stdout")->group(output);

@@ -16,7 +16,7 @@ namespace {
 struct PropsOptions {
   AnalysisOptions analysis;
   std::string file;
-  bool json = false, urdf = false, mjcf = false, about_origin = false, fast = false;
+  bool json = false, urdf = false, mjcf = false, about_origin = false, fast = false, force = false;
   unsigned long long threads = 0;
 };
 
@@ -38,16 +38,41 @@ int run_props(const PropsOptions& o) {
     std::fprintf(stderr, "pgamesh props: %s: %s\n", o.file.c_str(), e.what());
     return 1;
   }
-  if (o.json) {
-    std::printf("%s\n", props_json(report).c_str());
-  } else if (o.urdf || o.mjcf) {
-    std::fputs((o.urdf ? props_urdf(report) : props_mjcf(report)).c_str(), stdout);
+  // A URDF or MJCF file is read by a simulator that cannot tell a body from garbage: only a valid
+  // solid is exported (the front door's verdict, Analysis::volume_valid), unless --force, which
+  // writes the reasons into the file as an XML comment (props_urdf, props_mjcf).
+  const bool export_xml = o.urdf || o.mjcf;
+  const bool valid = report.volume_valid.value_or(false);
+  if (export_xml && !valid && !o.force) {
+    for (const auto& r : report.reasons)
+      std::fprintf(stderr, "pgamesh props: %s: not a valid solid: %s\n", o.file.c_str(), r.c_str());
+    std::fprintf(stderr, "pgamesh props: %s: no %s written (--force writes it with a warning)\n",
+                 o.file.c_str(), o.urdf ? "URDF" : "MJCF");
+    return 1;
+  }
+  // A flat or empty body has no centre of mass or inertia (nan): there is nothing to write, even
+  // forced, since no output prints nan as if it were a result.
+  if (export_xml && report.mass.volume == 0) {
+    std::fprintf(stderr,
+                 "pgamesh props: %s: zero volume: no centre of mass or inertia to write, even with "
+                 "--force\n",
+                 o.file.c_str());
+    return 1;
+  }
+  std::string out;
+  if (o.json)
+    out = props_json(report) + "\n";
+  else if (export_xml)
+    out = o.urdf ? props_urdf(report) : props_mjcf(report);
+  else
+    out = props_text(report, o.about_origin);
+  std::fwrite(out.data(), 1, out.size(), stdout);
+  if (export_xml) {
     for (const auto& w : report.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
-    if (report.volume_valid.has_value() && !*report.volume_valid)
+    if (!valid)
       for (const auto& r : report.reasons)
-        std::fprintf(stderr, "pgamesh props: not meaningful: %s\n", r.c_str());
-  } else {
-    std::fputs(props_text(report, o.about_origin).c_str(), stdout);
+        std::fprintf(stderr, "pgamesh props: warning: %s: not a valid solid (--force): %s\n",
+                     o.file.c_str(), r.c_str());
   }
   return 0;
 }
@@ -67,17 +92,23 @@ void add_props_command(CLI::App& app) {
       "(I_xy = -integral x y dm); principal moments ascending with right-handed unit axes.\n"
       "JSON fields: docs/json.md.\n"
       "Exit status: 0 on success (also for open meshes: the report says so), 1 for unreadable\n"
-      "input, 2 for bad usage.");
+      "input or a --urdf/--mjcf of a body that is not a valid solid (without --force), 2 for\n"
+      "bad usage. Nothing is written on stdout when the command fails.");
   auto o = std::make_shared<PropsOptions>();
   add_file(*sub, o->file, "the mesh file; \"-\" reads standard input");
-  add_number(*sub, "--density", o->analysis.mass.density,
-             "mass per unit volume (default 1: mass = volume)")
+  add_positive_number(*sub, "--density", o->analysis.mass.density,
+                      "mass per unit volume (default 1: mass = volume)")
       ->type_name("RHO");
-  add_number(*sub, "--mass", o->analysis.mass.mass, "total mass instead; the density is M / volume")
+  add_positive_number(*sub, "--mass", o->analysis.mass.mass,
+                      "total mass instead; the density is M / volume")
       ->type_name("M");
   sub->add_flag("--json", o->json, "one JSON object on stdout (numbers %.17g; docs/json.md)");
   sub->add_flag("--urdf", o->urdf, "print the URDF <inertial> element");
   sub->add_flag("--mjcf", o->mjcf, "print the MJCF <inertial> element");
+  sub->add_flag("--force", o->force,
+                "with --urdf/--mjcf: write the element even when the mesh is not a\n"
+                "valid solid (open, inconsistent, inward, flat, or --fast), with the\n"
+                "reasons in an XML comment");
   sub->add_flag("--about-origin", o->about_origin,
                 "also print the inertia tensor about the coordinate origin");
   sub->add_flag("--no-topology,--fast", o->fast,

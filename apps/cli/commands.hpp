@@ -84,6 +84,9 @@ CLI::Option* add_number(CLI::App& sub, const std::string& name, double& out,
                         std::optional<double> at_least = std::nullopt);
 CLI::Option* add_number(CLI::App& sub, const std::string& name, std::optional<double>& out,
                         const std::string& description);
+// A finite number > 0 (densities and masses).
+CLI::Option* add_positive_number(CLI::App& sub, const std::string& name, std::optional<double>& out,
+                                 const std::string& description);
 // A whole number in [low, high].
 CLI::Option* add_count(CLI::App& sub, const std::string& name, unsigned long long& out,
                        const std::string& description, unsigned long long low,

@@ -110,6 +110,24 @@ CLI::Option* add_number(CLI::App& sub, const std::string& name, std::optional<do
       ->type_name("X");
 }
 
+CLI::Option* add_positive_number(CLI::App& sub, const std::string& name, std::optional<double>& out,
+                                 const std::string& description) {
+  const std::string n = option_name(name);
+  return sub
+      .add_option_function<std::string>(
+          name,
+          [&out, n](const std::string& text) {
+            const double v = number_or_throw(n, text);
+            // A density or a mass of zero or less describes no body: refused here, before any
+            // file is read, rather than turned into negative masses and inertias.
+            if (!(v > 0))
+              throw CLI::ValidationError(n, "needs a positive number, got '" + text + "'");
+            out = v;
+          },
+          description)
+      ->type_name("X");
+}
+
 CLI::Option* add_count(CLI::App& sub, const std::string& name, unsigned long long& out,
                        const std::string& description, unsigned long long low,
                        unsigned long long high) {

@@ -1,24 +1,14 @@
 // The readable report of `pgamesh props` and the <inertial> elements for URDF and MJCF.
 #include <cmath>
-#include <cstdarg>
 #include <cstdio>
 
 #include "pgamesh/io/mesh_format.hpp"
 #include "props_report.hpp"
+#include "text_append.hpp"
 
 namespace pgamesh::cli {
 
 namespace {
-
-void append(std::string& out, const char* fmt, ...) __attribute__((format(printf, 2, 3)));
-void append(std::string& out, const char* fmt, ...) {
-  char buf[4096];
-  va_list args;
-  va_start(args, fmt);
-  std::vsnprintf(buf, sizeof buf, fmt, args);
-  va_end(args);
-  out += buf;
-}
 
 void matrix(std::string& out, const Mat3& m) {
   for (const auto& row : m)
@@ -43,9 +33,13 @@ std::string xml_comment(std::string text) {
   return "<!-- " + text + " -->\n";
 }
 
+// The warning a forced export carries inside the file, where it travels with the figures: the
+// front door's reasons the body is not a valid solid (pgamesh props refuses such a body unless
+// --force).
 std::string not_meaningful_comment(const Analysis& r) {
-  if (!r.volume_valid.has_value() || *r.volume_valid) return "";
-  std::string s = "NOT MEANINGFUL:";
+  if (r.volume_valid.value_or(false)) return "";
+  std::string s =
+      "WARNING: forced output, not a valid solid; these figures do not describe a body:";
   for (const auto& reason : r.reasons) s += " " + reason + ";";
   return xml_comment(s);
 }

@@ -69,6 +69,7 @@
 #include "pgamesh/io/mapped_file.hpp"
 #include "pgamesh/io/mesh_format.hpp"
 #include "pgamesh/io/read_mesh.hpp"
+#include "pgamesh/io/write_file.hpp"
 #include "pgamesh/io/write_mesh.hpp"
 
 // mesh

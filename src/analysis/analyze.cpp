@@ -1,7 +1,9 @@
 #include "pgamesh/analysis/analyze.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <optional>
+#include <stdexcept>
 #include <utility>
 
 #include "detail/memory/page_release.hpp"
@@ -22,8 +24,37 @@ namespace pgamesh {
 
 namespace {
 
+bool all_finite(Vec3d v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+bool all_finite(const Mat3& m) {
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      if (!std::isfinite(m[i][j])) return false;
+  return true;
+}
+
+// Coordinates so large that the area, the volume or the inertia overflow a double (a part of size
+// around 1e61 and up: inertia grows as the fifth power of the size) give inf or nan, which no
+// output may print as a result: the analysis is refused, naming the file. The centre of mass and
+// the inertia are undefined (nan) when the volume is 0, so they are judged only when it is not.
+void refuse_overflow(const Analysis& r) {
+  const MassProperties& m = r.mass;
+  const bool finite =
+      std::isfinite(m.area) && std::isfinite(m.volume) && std::isfinite(m.mass) &&
+      std::isfinite(m.gap_area) &&
+      (m.volume == 0 ||
+       (all_finite(m.center_of_mass) && all_finite(m.inertia_com) && all_finite(m.inertia_origin)));
+  if (!finite)
+    throw std::range_error(
+        "the coordinates are too large for double precision: the area, volume or inertia "
+        "overflows (scale the mesh down, e.g. express it in a larger unit)");
+}
+
 // Whether the figures describe a solid, and why not.
 void judge(Analysis& r) {
+  refuse_overflow(r);
   if (r.topology) {
     r.volume_valid = r.topology->volume_valid;
     if (!r.topology->volume_valid)

@@ -1,12 +1,13 @@
 #include "pgamesh/io/write_mesh.hpp"
 
 #include <bit>
-#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <stdexcept>
+
+#include "pgamesh/io/write_file.hpp"
 
 namespace pgamesh {
 
@@ -242,12 +243,7 @@ std::string write_mesh_bytes(const Mesh& mesh, MeshFormat format, const WriteOpt
 
 void write_mesh(const Mesh& mesh, const std::string& path, MeshFormat format,
                 const WriteOptions& options) {
-  const std::string bytes = write_mesh_bytes(mesh, format, options);
-  std::FILE* f = std::fopen(path.c_str(), "wb");
-  if (!f) throw std::runtime_error(path + ": cannot write: " + std::strerror(errno));
-  const bool ok = std::fwrite(bytes.data(), 1, bytes.size(), f) == bytes.size();
-  const bool closed = std::fclose(f) == 0;
-  if (!ok || !closed) throw std::runtime_error(path + ": write failed: " + std::strerror(errno));
+  write_file_atomically(path, write_mesh_bytes(mesh, format, options));
 }
 
 }  // namespace pgamesh

@@ -44,6 +44,13 @@ Tank make_tank(const Mesh& mesh) {
     add_triangle(t.total, t.vertices[tri[0]] - t.reference, t.vertices[tri[1]] - t.reference,
                  t.vertices[tri[2]] - t.reference);
   const BodyMoments m = body_moments(t.total);
+  // Coordinates so large that the sums overflow (a tank of size around 1e77 and up: the norm of a
+  // face's vector area squares its L² components) would give an infinite or undefined area or
+  // volume, which no gauge may print as a result.
+  if (!std::isfinite(m.volume) || !std::isfinite(m.area))
+    throw std::invalid_argument(
+        "the coordinates are too large for double precision: the tank's area or volume "
+        "overflows (scale the mesh down, e.g. express it in a larger unit)");
   t.volume = m.volume;
   t.area = m.area;
   t.gap_area = m.gap_area;

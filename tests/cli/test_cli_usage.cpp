@@ -48,9 +48,9 @@ TEST(CliUsage, HelpCommandPrintsTheCommandsHelp) {
   EXPECT_NE(demo.out.find("pgamesh demo"), std::string::npos) << demo.out;
   // Every option of today is in the help.
   const std::string props = run_cli("props --help").out;
-  for (const char* option :
-       {"--density", "--mass", "--json", "--urdf", "--mjcf", "--about-origin", "--no-topology",
-        "--fast", "--weld-tolerance", "--format", "--threads", "--degeneracy-tolerance"})
+  for (const char* option : {"--density", "--mass", "--json", "--urdf", "--mjcf", "--force",
+                             "--about-origin", "--no-topology", "--fast", "--weld-tolerance",
+                             "--format", "--threads", "--degeneracy-tolerance"})
     EXPECT_NE(props.find(option), std::string::npos) << option;
   const std::string check = run_cli("check --help").out;
   for (const char* option : {"--json", "--weld-tolerance", "--area-threshold", "--max-list",

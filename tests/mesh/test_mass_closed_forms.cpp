@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <random>
 
@@ -78,10 +79,16 @@ TEST(MassClosedForms, GivenMassSetsDensity) {
   EXPECT_NEAR(p.inertia_com[0][0], 12.0 / 12 * (4 + 9), 1e-13);
 }
 
-TEST(MassClosedForms, RejectsNonFiniteDensity) {
-  MassOptions opt;
-  opt.density = std::nan("");
-  EXPECT_THROW(mass_properties(box_mesh(1, 1, 1), opt), std::invalid_argument);
+TEST(MassClosedForms, RejectsDensityOrMassThatIsNotPositiveAndFinite) {
+  // Zero or less describes no body (its masses and inertias would be negative or zero).
+  for (double bad : {0.0, -0.0, -1.0, std::numeric_limits<double>::infinity(), std::nan("")}) {
+    MassOptions density;
+    density.density = bad;
+    EXPECT_THROW(mass_properties(box_mesh(1, 1, 1), density), std::invalid_argument) << bad;
+    MassOptions mass;
+    mass.mass = bad;
+    EXPECT_THROW(mass_properties(box_mesh(1, 1, 1), mass), std::invalid_argument) << bad;
+  }
 }
 
 TEST(MassClosedForms, Tetrahedron) {

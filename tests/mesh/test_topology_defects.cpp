@@ -43,6 +43,29 @@ TEST(TopologyDefects, FlippedFacesAreInconsistentAndFixRestoresExactlyThem) {
   EXPECT_EQ(bad.corners, good.corners);  // with_flipped and the fix keep the first corner
 }
 
+TEST(TopologyDefects, EdgeUsedThreeTimesOneWayIsNamedInTheNote) {
+  // Three triangles on the edge 0→1, all in the same direction: one inconsistent edge used by
+  // three faces, which the note must not call "twice".
+  Mesh m;
+  m.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0, -1, 0}};
+  m.add_face({0, 1, 2});
+  m.add_face({0, 1, 3});
+  m.add_face({0, 1, 4});
+  const TopologyReport r = analyze_topology(m);
+  EXPECT_FALSE(r.orientation_consistent);
+  ASSERT_EQ(r.inconsistent_edges, 1u);
+  ASSERT_EQ(r.inconsistent_edge_list.size(), 1u);
+  EXPECT_EQ(r.inconsistent_edge_list[0].face_count, 3u);
+  bool named = false;
+  for (const auto& note : r.notes) {
+    EXPECT_EQ(note.find("twice"), std::string::npos) << note;
+    if (note.starts_with("orientation inconsistent: 1 edges are used by two or more faces in the "
+                         "same direction"))
+      named = true;
+  }
+  EXPECT_TRUE(named);
+}
+
 TEST(TopologyDefects, FixWhenTheSeedFaceItselfWasFlipped) {
   // Face 0 is the walk's seed; the outward step must still reverse exactly the flipped faces.
   const Mesh good = unit_cube();

@@ -186,8 +186,8 @@ void add_routes(httplib::Server& svr, const ServerOptions& options, const HostCh
             AnalysisOptions options;
             if (req.has_param("density")) {
               double density = 0;
-              if (!parse_number(req.get_param_value("density"), density) || density < 0)
-                return send_error(res, 400, "density must be a finite number >= 0");
+              if (!parse_number(req.get_param_value("density"), density) || !(density > 0))
+                return send_error(res, 400, "density must be a positive finite number");
               options.mass.density = density;
             }
             if (auto m = find_mesh(store, req.matches[1], res)) {

@@ -22,7 +22,8 @@ struct WriteOptions {
 // std::invalid_argument for MeshFormat::unknown or corner indices outside the vertex array.
 std::string write_mesh_bytes(const Mesh& mesh, MeshFormat format, const WriteOptions& options = {});
 
-// Writes write_mesh_bytes(mesh, format, options) to `path`; throws std::runtime_error naming the
+// Writes write_mesh_bytes(mesh, format, options) to `path` atomically (write_file_atomically:
+// the old file or the whole new one, never a truncated one); throws std::runtime_error naming the
 // path when it cannot be written.
 void write_mesh(const Mesh& mesh, const std::string& path, MeshFormat format,
                 const WriteOptions& options = {});

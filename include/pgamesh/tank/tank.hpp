@@ -33,7 +33,8 @@ struct Tank {
 /// for planar polygons, concave ones included (their carrier is the sum of the fan's carriers);
 /// areas are those of the fan triangles, which for a concave face counts the fan's inverted
 /// triangles positively, and for a non-planar face differs from add_polygon's ½‖F‖. Throws
-/// std::invalid_argument for an empty mesh, an index out of range or a non-finite coordinate.
+/// std::invalid_argument for an empty mesh, an index out of range, a non-finite coordinate or
+/// coordinates so large that the tank's area or volume overflows a double.
 Tank make_tank(const Mesh& mesh);
 
 /// Lowest and highest value of up·v over the vertices (the empty and full levels).

@@ -50,10 +50,12 @@ ProductsOfInertia products_of_inertia(const Mat3& inertia) {
 
 MassProperties mass_properties_from_sums(const BoundarySums& sums, Vec3d reference,
                                          const MassOptions& options) {
-  if (options.density && !std::isfinite(*options.density))
-    throw std::invalid_argument("density must be a finite number");
-  if (options.mass && !std::isfinite(*options.mass))
-    throw std::invalid_argument("mass must be a finite number");
+  // A density or mass of zero or less describes no body (its masses and inertias would be negative
+  // or zero): refused like a non-finite one.
+  if (options.density && !(std::isfinite(*options.density) && *options.density > 0))
+    throw std::invalid_argument("density must be a positive finite number");
+  if (options.mass && !(std::isfinite(*options.mass) && *options.mass > 0))
+    throw std::invalid_argument("mass must be a positive finite number");
   const BodyMoments m = body_moments(sums);
   MassProperties p;
   p.reference_point = reference;

@@ -34,9 +34,10 @@ void write_notes(TopologyReport& r) {
                       "gives a volume between " +
                       format_double(r.volume_min) + " and " + format_double(r.volume_max));
   if (!r.orientation_consistent)
-    r.notes.push_back("orientation inconsistent: " + n(r.inconsistent_edges) +
-                      " edges are used twice in the same direction; volume, centre of mass and "
-                      "inertia are not meaningful (--fix-orientation repairs this)");
+    r.notes.push_back(
+        "orientation inconsistent: " + n(r.inconsistent_edges) +
+        " edges are used by two or more faces in the same direction; volume, centre of mass and "
+        "inertia are not meaningful (--fix-orientation repairs this)");
   if (r.duplicated_area_faces > 0)
     r.notes.push_back("duplicated faces: " + n(r.duplicated_faces) +
                       " faces repeat an earlier face's vertices; their volume counts twice or "

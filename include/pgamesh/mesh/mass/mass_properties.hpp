@@ -72,7 +72,7 @@ BoundarySums mesh_boundary_sums(const Mesh& mesh, Vec3d reference, unsigned thre
 
 // Mass properties from boundary sums accumulated about `reference`. The counts (faces, triangles,
 // vertices) are left for the caller to fill in. Throws std::invalid_argument for a density or mass
-// that is not finite.
+// that is not positive and finite.
 MassProperties mass_properties_from_sums(const BoundarySums& sums, Vec3d reference,
                                          const MassOptions& options);
 
