@@ -106,8 +106,8 @@ std::string readable_report(const Mesh& mesh, const MeshSource& source, const An
   if (r.components > 1)
     for (const ComponentSummary& c : r.component_list)
       append(out, "    from face %u: %zu faces, area %.9g, volume %.9g%s%s%s\n", c.first_face,
-             c.faces, c.area, c.volume, c.closed ? "" : " (not closed)", c.cavity ? " (cavity)" : "",
-             c.inward ? " (wrong way)" : "");
+             c.faces, c.area, c.volume, c.closed ? "" : " (not closed)",
+             c.cavity ? " (cavity)" : "", c.inward ? " (wrong way)" : "");
   if (fix) {
     append(out, "  orientation fix     %zu faces flipped", fix->flipped);
     if (fix->conflicts) append(out, ", %zu edges could not be made consistent", fix->conflicts);
