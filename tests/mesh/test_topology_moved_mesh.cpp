@@ -57,6 +57,26 @@ void expect_same_weld(const Mesh& mesh, double tolerance) {
   expect_bits(moved.tolerance, kept.tolerance, "tolerance");
 }
 
+// weld on a moved mesh of any faces (vertices compacted and corners renumbered in its arrays)
+// against the copying weld.
+void expect_same_mesh_weld(const Mesh& mesh, double tolerance) {
+  const WeldResult kept = weld(mesh, tolerance);
+  Mesh copy = mesh;
+  const WeldResult moved = weld(std::move(copy), tolerance);
+  EXPECT_TRUE(copy.vertices.empty() && copy.corners.empty());
+  ASSERT_EQ(moved.mesh.vertices.size(), kept.mesh.vertices.size());
+  EXPECT_EQ(std::memcmp(moved.mesh.vertices.data(), kept.mesh.vertices.data(),
+                        kept.mesh.vertices.size() * sizeof(Vec3d)),
+            0);
+  EXPECT_EQ(moved.mesh.corners, kept.mesh.corners);
+  EXPECT_EQ(moved.mesh.face_offsets, kept.mesh.face_offsets);
+  EXPECT_EQ(moved.map.to_welded, kept.map.to_welded);
+  EXPECT_EQ(moved.map.representative, kept.map.representative);
+  EXPECT_EQ(moved.map.merged, kept.map.merged);
+  expect_bits(moved.map.max_moved, kept.map.max_moved, "max_moved");
+  expect_bits(moved.map.tolerance, kept.map.tolerance, "tolerance");
+}
+
 TEST(TopologyMovedMesh, WeldMapCompactingEqualsWeldMap) {
   std::vector<Vec3d> v = test::unshared(test::triangulated(test::uv_sphere(1, 8, 12))).vertices;
   v.push_back({7, 7, 7});  // unreferenced, its own class
@@ -98,6 +118,19 @@ TEST(TopologyMovedMesh, WeldInPlace) {
   Mesh bad = test::unit_cube();
   bad.corners[4] = 8;
   EXPECT_THROW(weld_triangles(std::move(bad)), std::out_of_range);
+}
+
+TEST(TopologyMovedMesh, WeldOfAnyFacesInPlace) {
+  const Mesh sphere = test::uv_sphere(2, 20, 30);  // quads, and triangles at the poles
+  expect_same_mesh_weld(sphere, 0);
+  expect_same_mesh_weld(test::unshared(sphere), 0);
+  Mesh near = test::unshared(sphere);
+  for (std::size_t i = 0; i < near.vertices.size(); i += 3) near.vertices[i].y -= 1e-10;
+  expect_same_mesh_weld(near, 1e-8);
+  expect_same_mesh_weld(Mesh{}, 0);
+  Mesh bad = test::unit_cube_quads();
+  bad.corners[4] = 8;
+  EXPECT_THROW(weld(std::move(bad)), std::out_of_range);
 }
 
 // The lowest index of a vertex at p's coordinates (the weld's representative, by brute force).
