@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <stdexcept>
 #include <string>
 
 #include "mesh/weld/welded_triangles.hpp"
@@ -187,22 +188,56 @@ TEST(TopologyMovedMesh, PolygonsKeepTheirPass) {
 }
 
 TEST(TopologyMovedMesh, ToleranceWeld) {
-  Mesh m = test::unshared(test::unit_cube());
-  for (std::size_t i = 0; i < m.vertices.size(); i += 2) m.vertices[i].x += 1e-9;
-  TopologyOptions o;
-  o.weld_tolerance = 1e-6;
-  const TopologyReport r = expect_same_topology(m, o);
-  EXPECT_TRUE(r.closed);
-  EXPECT_GT(r.weld_max_moved, 0);
+  for (const Mesh& cube : {test::unit_cube(), test::unit_cube_quads()}) {
+    Mesh m = test::unshared(cube);
+    for (std::size_t i = 0; i < m.vertices.size(); i += 2) m.vertices[i].x += 1e-9;
+    TopologyOptions o;
+    o.weld_tolerance = 1e-6;
+    const TopologyReport r = expect_same_topology(m, o);
+    EXPECT_TRUE(r.closed);
+    EXPECT_GT(r.weld_max_moved, 0);
+  }
+}
+
+// The message of the exception analyze_topology(mesh, options) throws, through either overload
+// (they must agree), and that it is an E.
+template <class E>
+std::string error_of(const Mesh& mesh, const TopologyOptions& options = {}) {
+  std::string kept, moved;
+  try {
+    analyze_topology(mesh, options);
+  } catch (const E& e) {
+    kept = e.what();
+  }
+  try {
+    analyze_topology(Mesh(mesh), options);
+  } catch (const E& e) {
+    moved = e.what();
+  }
+  EXPECT_EQ(moved, kept);
+  return kept;
 }
 
 TEST(TopologyMovedMesh, BadInputThrowsTheSame) {
-  Mesh m = test::unit_cube();
-  m.corners[5] = 99;
-  EXPECT_THROW(analyze_topology(Mesh(m)), std::out_of_range);
-  TopologyOptions bad;
-  bad.weld_tolerance = -1;
-  EXPECT_THROW(analyze_topology(test::unit_cube(), bad), std::invalid_argument);
+  for (const Mesh& cube : {test::unit_cube(), test::unit_cube_quads()}) {
+    Mesh m = cube;
+    m.corners[5] = 99;
+    EXPECT_EQ(error_of<std::out_of_range>(m), "mesh: corner 5 names vertex 99 of 8");
+    m = cube;
+    m.face_offsets[2] = 1;
+    EXPECT_EQ(error_of<std::out_of_range>(m), "mesh: face offsets descend at face 1");
+    m = cube;
+    m.face_offsets.back() -= 1;
+    EXPECT_EQ(error_of<std::out_of_range>(m), "mesh: face offsets do not span the corner list");
+    TopologyOptions bad;
+    bad.weld_tolerance = -1;
+    EXPECT_EQ(error_of<std::invalid_argument>(cube, bad),
+              "weld tolerance must be a finite number >= 0");
+    bad = {};
+    bad.area_threshold = -1;
+    EXPECT_EQ(error_of<std::invalid_argument>(cube, bad),
+              "area threshold must be a finite number >= 0");
+  }
 }
 
 TEST(TopologyMovedMesh, RealMeshes) {

@@ -1,8 +1,9 @@
 // The triangle pass (triangle_topology.hpp) against the polygon pass (analyze_polygon_topology),
 // field by field and bit for bit, on meshes full of defects — random triangles on a 3×3×3 grid
 // (collapsed, duplicated, non-manifold, open, inconsistent), the defect meshes of the other
-// topology tests and the shared real meshes — and the weld of binary STL records against the weld
-// of the read mesh (classes, numbering, representatives, −0, NaN, released pages).
+// topology tests and the shared real meshes — both checked against the brute-force reference
+// (support/reference_topology.hpp) too; and the weld of binary STL records against the weld of the
+// read mesh (classes, numbering, representatives, −0, NaN, released pages).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -21,6 +22,7 @@
 #include "pgamesh/mesh/topology/topology.hpp"
 #include "support/golden.hpp"
 #include "support/read_helpers.hpp"
+#include "support/reference_topology.hpp"
 #include "support/same_topology.hpp"
 #include "support/stl_bytes.hpp"
 #include "support/temp_file.hpp"
@@ -32,11 +34,12 @@ namespace {
 using test::expect_same_report;
 using test::same_bits;
 
-// Both passes on one triangle mesh; returns the report for further checks.
+// Both passes on one triangle mesh, and the reference; returns the report for further checks.
 TopologyReport expect_passes_agree(const Mesh& m, const TopologyOptions& options = {}) {
   const TopologyReport polygon = analyze_polygon_topology(m, options);
   const TopologyReport triangle = analyze_topology(m, options);
   expect_same_report(triangle, polygon);
+  test::expect_matches_reference(triangle, m, options);
   return triangle;
 }
 
