@@ -1,4 +1,4 @@
-// analyze_topology(Mesh&&), which frees a triangle mesh's arrays once it is welded, against
+// analyze_topology(Mesh&&), which welds the mesh in its own arrays, against
 // analyze_topology(const Mesh&) field by field — on closed, open, unwelded, inconsistent,
 // duplicated, polygon and tolerance-welded meshes and on the real meshes of ../shared/meshes.
 #include <gtest/gtest.h>
@@ -178,13 +178,17 @@ TEST(TopologyMovedMesh, TrianglesClosedOpenUnweldedFlippedDuplicated) {
   EXPECT_TRUE(expect_same_topology(test::unshared(sphere)).closed);
 }
 
-TEST(TopologyMovedMesh, PolygonsKeepTheirPass) {
+TEST(TopologyMovedMesh, PolygonsAreWeldedInPlaceToo) {
   const Mesh quads = test::unit_cube_quads();
   EXPECT_TRUE(expect_same_topology(quads).closed);
   EXPECT_EQ(expect_same_topology(test::without_faces(quads, {1})).boundary_loops.size(), 1u);
-  // A polygon mesh given as an rvalue is read, not freed, by the polygon pass.
+  EXPECT_EQ(expect_same_topology(test::unshared(quads)).merged_vertices, 24u - 8u);
+  EXPECT_EQ(expect_same_topology(test::merged(quads, quads)).duplicated_faces, 6u);
+  // Quads and triangles at once (a UV sphere's poles are triangles), welded from fresh copies.
+  EXPECT_TRUE(expect_same_topology(test::unshared(test::uv_sphere(2, 20, 30))).closed);
   Mesh copy = quads;
   analyze_topology(std::move(copy));
+  EXPECT_TRUE(copy.vertices.empty() && copy.corners.empty());
 }
 
 TEST(TopologyMovedMesh, ToleranceWeld) {
