@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "mesh/mass/stl_mass_properties.hpp"
-#include "mesh/topology/triangle_topology.hpp"
+#include "mesh/topology/welded_topology.hpp"
 #include "mesh/weld/welded_triangles.hpp"
 #include "pgamesh/geometry/body_moments.hpp"
 #include "pgamesh/mesh/mass/mass_properties.hpp"
@@ -105,7 +105,7 @@ void BM_WeldBinaryStl(benchmark::State& state) {
 }
 BENCHMARK(BM_WeldBinaryStl)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-// The topology and mass pass on the welded triangles (triangle_topology.hpp) that `pgamesh props`
+// The topology and mass pass on the welded triangles (welded_topology.hpp) that `pgamesh props`
 // runs after the weld: face sums, edges, loops, orientation, components.
 void BM_WeldedTriangleProps(benchmark::State& state) {
   const std::vector<char>& bytes = sphere_stl();

@@ -1,14 +1,15 @@
 // Topology speed: the exact weld of an STL-like vertex soup (three fresh vertices per triangle),
-// the weld of binary STL records, the triangle pass on welded triangles and the whole
-// analyze_topology pass (weld, edges, components, loops, defects, sums), on icospheres of 81 920 to
-// 5 242 880 triangles. Not a test: nothing here asserts a time.
+// the weld of binary STL records, the topology pass on welded triangles, the whole
+// analyze_topology pass (weld, edges, components, loops, defects, sums) and the same pass walking
+// the triangles as polygons, on icospheres of 81 920 to 5 242 880 triangles. Not a test: nothing
+// here asserts a time.
 //   build/release/bench/bench_topology --benchmark_min_time=1
 #include <benchmark/benchmark.h>
 
 #include <cstring>
 #include <vector>
 
-#include "mesh/topology/triangle_topology.hpp"
+#include "mesh/topology/welded_topology.hpp"
 #include "mesh/weld/welded_triangles.hpp"
 #include "pgamesh/core/bounding_box.hpp"
 #include "pgamesh/mesh/primitives.hpp"
@@ -85,7 +86,7 @@ void BM_WeldBinaryStl(benchmark::State& state) {
 }
 BENCHMARK(BM_WeldBinaryStl)->Arg(6)->Arg(8)->Arg(9)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-// The triangle pass alone on welded triangles (edge pass and face tally on two threads).
+// The pass alone on welded triangles (edge pass and face tally on two threads).
 void BM_AnalyzeWeldedTriangles(benchmark::State& state) {
   const std::vector<char>& bytes = stl_bytes(static_cast<int>(state.range(0)));
   const WeldedTriangles w = weld_binary_stl(*binary_stl_view(bytes, "soup.stl"), "soup.stl");
@@ -103,7 +104,7 @@ BENCHMARK(BM_AnalyzeWeldedTriangles)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
-// analyze_topology on a Mesh soup: weld_map, then the triangle pass.
+// analyze_topology on a Mesh soup: weld_triangles, then the pass on welded triangles.
 void BM_AnalyzeTopology(benchmark::State& state) {
   const Mesh& m = soup(static_cast<int>(state.range(0)));
   for (auto _ : state) {
@@ -114,16 +115,18 @@ void BM_AnalyzeTopology(benchmark::State& state) {
 }
 BENCHMARK(BM_AnalyzeTopology)->Arg(6)->Arg(8)->Arg(9)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-// The polygon pass on the same soup, for comparison.
-void BM_AnalyzePolygonTopology(benchmark::State& state) {
+// The same soup welded as a polygon mesh and walked through the polygon layout of the pass
+// (face_layout.hpp), for comparison with the triangle layout above.
+void BM_AnalyzeWeldedMesh(benchmark::State& state) {
   const Mesh& m = soup(static_cast<int>(state.range(0)));
+  const Vec3d ref = bounding_box(m.vertices).centre();
   for (auto _ : state) {
-    TopologyReport r = analyze_polygon_topology(m);
+    TopologyReport r = analyze_welded_mesh(weld(m), ref);
     benchmark::DoNotOptimize(r.edges);
   }
   set_counters(state, static_cast<double>(m.face_count()));
 }
-BENCHMARK(BM_AnalyzePolygonTopology)
+BENCHMARK(BM_AnalyzeWeldedMesh)
     ->Arg(6)
     ->Arg(8)
     ->Arg(9)

@@ -77,7 +77,6 @@
 #include "pgamesh/mesh/primitives.hpp"
 #include "pgamesh/mesh/topology/boundary_loops.hpp"
 #include "pgamesh/mesh/topology/components.hpp"
-#include "pgamesh/mesh/topology/duplicate_faces.hpp"
 #include "pgamesh/mesh/topology/edges.hpp"
 #include "pgamesh/mesh/topology/orientation.hpp"
 #include "pgamesh/mesh/topology/shell_nesting.hpp"

@@ -13,7 +13,7 @@
 #include "mesh/mass/stl_ascii_sums.hpp"
 #include "mesh/mass/stl_mass_properties.hpp"
 #include "mesh/topology/ply_topology.hpp"
-#include "mesh/topology/triangle_topology.hpp"
+#include "mesh/topology/welded_topology.hpp"
 #include "mesh/weld/welded_triangles.hpp"
 #include "pgamesh/core/bounding_box.hpp"
 #include "pgamesh/core/input_error.hpp"

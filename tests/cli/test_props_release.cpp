@@ -83,7 +83,7 @@ TEST(PropsRelease, BinaryFormatsAndToleranceWeld) {
 }
 
 TEST(PropsRelease, PolygonsNegativeIndicesAndUnweldedTriangles) {
-  // Quads and pole triangles (the polygon pass keeps the mesh), then relative indices.
+  // Quads and pole triangles (the polygon layout of the topology pass), then relative indices.
   std::string obj =
       pgamesh::write_mesh_bytes(pgamesh::test::uv_sphere(1.5, 220, 440), pgamesh::MeshFormat::obj);
   obj += "v 0 0 9\nv 1 0 9\nv 0 1 9\nf -3 -1 -2\n";

@@ -1,6 +1,6 @@
 // Topology of cubes: closed, minus one face (the gap is exactly the face), minus two adjacent faces
-// (the gap is √2, not the missing 2: docs/conventions.md §6, paper Cor. 4.1), as triangles and as
-// quads.
+// (the gap is √2, not the missing 2: docs/conventions.md §6, paper Cor. 4.1), as triangles, as
+// quads (closed, open, a face listed twice) and as both at once, against counts worked out by hand.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -94,18 +94,88 @@ TEST(TopologyCube, CubeMinusTwoAdjacentFacesGapIsRootTwo) {
   EXPECT_DOUBLE_EQ(r.carrier_sum.e3, -2.0);
 }
 
-TEST(TopologyCube, QuadCubeMatchesTriangleCube) {
+TEST(TopologyCube, QuadCubeIsClosed) {
   const TopologyReport r = analyze_topology(test::unit_cube_quads());
   EXPECT_EQ(r.faces, 6u);
   EXPECT_EQ(r.triangles, 12u);
-  EXPECT_EQ(r.edges, 12u);
+  EXPECT_EQ(r.vertices, 8u);
+  EXPECT_EQ(r.edges, 12u);  // V − E + F = 8 − 12 + 6 = 2
   EXPECT_TRUE(r.closed);
+  EXPECT_TRUE(r.orientation_consistent);
+  EXPECT_TRUE(r.volume_valid);
+  EXPECT_EQ(r.components, 1u);
+  EXPECT_EQ(r.closed_components, 1u);
+  EXPECT_EQ(r.component_list[0].faces, 6u);
   EXPECT_DOUBLE_EQ(r.area, 6.0);
   EXPECT_DOUBLE_EQ(r.volume, 1.0);
-  const TopologyReport open = analyze_topology(test::without_faces(test::unit_cube_quads(), {1}));
-  ASSERT_EQ(open.boundary_loops.size(), 1u);
-  EXPECT_EQ(open.gap_area, 1.0);
-  EXPECT_EQ(open.boundary_loops[0].vector_area.z, -1.0);
+  EXPECT_DOUBLE_EQ(r.component_list[0].volume, 1.0);
+  EXPECT_EQ(r.gap_area, 0.0);
+  EXPECT_TRUE(r.boundary_loops.empty());
+  EXPECT_TRUE(r.notes.empty());
+}
+
+TEST(TopologyCube, QuadCubeMinusTopHasOneSquareLoop) {
+  // Face 1 is the z = 1 square 4 5 7 6: its four edges are left with one face each.
+  const TopologyReport r = analyze_topology(test::without_faces(test::unit_cube_quads(), {1}));
+  EXPECT_EQ(r.faces, 5u);
+  EXPECT_EQ(r.edges, 12u);
+  EXPECT_EQ(r.boundary_edges, 4u);
+  EXPECT_FALSE(r.closed);
+  EXPECT_FALSE(r.volume_valid);
+  EXPECT_EQ(r.components, 1u);
+  ASSERT_EQ(r.boundary_loops.size(), 1u);
+  const BoundaryLoop& loop = r.boundary_loops[0];
+  EXPECT_TRUE(loop.closed);
+  EXPECT_EQ(loop.half_edges.size(), 4u);
+  EXPECT_EQ(loop.perimeter, 4.0);
+  EXPECT_EQ(loop.area, 1.0);
+  EXPECT_EQ(loop.vector_area.z, -1.0);
+  EXPECT_EQ(r.gap_area, 1.0);
+  EXPECT_DOUBLE_EQ(r.volume_min, 2.0 / 3.0);
+  EXPECT_DOUBLE_EQ(r.volume_max, 1.0);
+}
+
+TEST(TopologyCube, QuadListedTwiceIsOneDuplicate) {
+  // Face 0 (0 2 3 1) again, then reversed: each repeats face 0, and face 0's four edges are used
+  // by three faces, then by four (two each way).
+  Mesh m = test::unit_cube_quads();
+  m.add_face({0, 2, 3, 1});
+  TopologyReport r = analyze_topology(m);
+  EXPECT_EQ(r.duplicated_faces, 1u);
+  EXPECT_EQ(r.duplicated_area_faces, 1u);
+  ASSERT_EQ(r.duplicated_list.size(), 1u);
+  EXPECT_EQ(r.duplicated_list[0].face, 6u);
+  EXPECT_EQ(r.duplicated_list[0].same_as, 0u);
+  EXPECT_DOUBLE_EQ(r.duplicated_list[0].area, 1.0);
+  EXPECT_EQ(r.edges, 12u);
+  EXPECT_EQ(r.nonmanifold_edges, 4u);
+  EXPECT_EQ(r.inconsistent_edges, 0u);  // 2 : 1 uses pair up but for the odd one out
+  EXPECT_FALSE(r.volume_valid);
+  m.add_face({0, 1, 3, 2});
+  r = analyze_topology(m);
+  EXPECT_EQ(r.duplicated_faces, 2u);
+  EXPECT_EQ(r.duplicated_list[1].face, 7u);
+  EXPECT_EQ(r.duplicated_list[1].same_as, 0u);
+  EXPECT_EQ(r.nonmanifold_edges, 4u);
+  EXPECT_EQ(r.inconsistent_edges, 0u);  // 2 : 2
+}
+
+TEST(TopologyCube, TrianglesAndQuadsTogether) {
+  // The z faces as quads, the other four sides as the triangle pairs of unit_cube: 10 faces, the
+  // 12 cube edges and 4 diagonals (V − E + F = 8 − 16 + 10 = 2).
+  Mesh m = test::without_faces(test::unit_cube(), {0, 1, 2, 3});
+  m.add_face({0, 2, 3, 1});
+  m.add_face({4, 5, 7, 6});
+  const TopologyReport r = analyze_topology(m);
+  EXPECT_EQ(r.faces, 10u);
+  EXPECT_EQ(r.triangles, 12u);
+  EXPECT_EQ(r.vertices, 8u);
+  EXPECT_EQ(r.edges, 16u);
+  EXPECT_TRUE(r.closed);
+  EXPECT_TRUE(r.volume_valid);
+  EXPECT_EQ(r.components, 1u);
+  EXPECT_DOUBLE_EQ(r.area, 6.0);
+  EXPECT_DOUBLE_EQ(r.volume, 1.0);
 }
 
 TEST(TopologyCube, FarFromOriginKeepsDigits) {

@@ -1,10 +1,11 @@
-// analyze_topology(Mesh&&), which frees a triangle mesh's arrays once it is welded, against
+// analyze_topology(Mesh&&), which welds the mesh in its own arrays, against
 // analyze_topology(const Mesh&) field by field — on closed, open, unwelded, inconsistent,
 // duplicated, polygon and tolerance-welded meshes and on the real meshes of ../shared/meshes.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstring>
+#include <stdexcept>
 #include <string>
 
 #include "mesh/weld/welded_triangles.hpp"
@@ -57,6 +58,26 @@ void expect_same_weld(const Mesh& mesh, double tolerance) {
   expect_bits(moved.tolerance, kept.tolerance, "tolerance");
 }
 
+// weld on a moved mesh of any faces (vertices compacted and corners renumbered in its arrays)
+// against the copying weld.
+void expect_same_mesh_weld(const Mesh& mesh, double tolerance) {
+  const WeldResult kept = weld(mesh, tolerance);
+  Mesh copy = mesh;
+  const WeldResult moved = weld(std::move(copy), tolerance);
+  EXPECT_TRUE(copy.vertices.empty() && copy.corners.empty());
+  ASSERT_EQ(moved.mesh.vertices.size(), kept.mesh.vertices.size());
+  EXPECT_EQ(std::memcmp(moved.mesh.vertices.data(), kept.mesh.vertices.data(),
+                        kept.mesh.vertices.size() * sizeof(Vec3d)),
+            0);
+  EXPECT_EQ(moved.mesh.corners, kept.mesh.corners);
+  EXPECT_EQ(moved.mesh.face_offsets, kept.mesh.face_offsets);
+  EXPECT_EQ(moved.map.to_welded, kept.map.to_welded);
+  EXPECT_EQ(moved.map.representative, kept.map.representative);
+  EXPECT_EQ(moved.map.merged, kept.map.merged);
+  expect_bits(moved.map.max_moved, kept.map.max_moved, "max_moved");
+  expect_bits(moved.map.tolerance, kept.map.tolerance, "tolerance");
+}
+
 TEST(TopologyMovedMesh, WeldMapCompactingEqualsWeldMap) {
   std::vector<Vec3d> v = test::unshared(test::triangulated(test::uv_sphere(1, 8, 12))).vertices;
   v.push_back({7, 7, 7});  // unreferenced, its own class
@@ -98,6 +119,19 @@ TEST(TopologyMovedMesh, WeldInPlace) {
   Mesh bad = test::unit_cube();
   bad.corners[4] = 8;
   EXPECT_THROW(weld_triangles(std::move(bad)), std::out_of_range);
+}
+
+TEST(TopologyMovedMesh, WeldOfAnyFacesInPlace) {
+  const Mesh sphere = test::uv_sphere(2, 20, 30);  // quads, and triangles at the poles
+  expect_same_mesh_weld(sphere, 0);
+  expect_same_mesh_weld(test::unshared(sphere), 0);
+  Mesh near = test::unshared(sphere);
+  for (std::size_t i = 0; i < near.vertices.size(); i += 3) near.vertices[i].y -= 1e-10;
+  expect_same_mesh_weld(near, 1e-8);
+  expect_same_mesh_weld(Mesh{}, 0);
+  Mesh bad = test::unit_cube_quads();
+  bad.corners[4] = 8;
+  EXPECT_THROW(weld(std::move(bad)), std::out_of_range);
 }
 
 // The lowest index of a vertex at p's coordinates (the weld's representative, by brute force).
@@ -144,32 +178,70 @@ TEST(TopologyMovedMesh, TrianglesClosedOpenUnweldedFlippedDuplicated) {
   EXPECT_TRUE(expect_same_topology(test::unshared(sphere)).closed);
 }
 
-TEST(TopologyMovedMesh, PolygonsKeepTheirPass) {
+TEST(TopologyMovedMesh, PolygonsAreWeldedInPlaceToo) {
   const Mesh quads = test::unit_cube_quads();
   EXPECT_TRUE(expect_same_topology(quads).closed);
   EXPECT_EQ(expect_same_topology(test::without_faces(quads, {1})).boundary_loops.size(), 1u);
-  // A polygon mesh given as an rvalue is read, not freed, by the polygon pass.
+  EXPECT_EQ(expect_same_topology(test::unshared(quads)).merged_vertices, 24u - 8u);
+  EXPECT_EQ(expect_same_topology(test::merged(quads, quads)).duplicated_faces, 6u);
+  // Quads and triangles at once (a UV sphere's poles are triangles), welded from fresh copies.
+  EXPECT_TRUE(expect_same_topology(test::unshared(test::uv_sphere(2, 20, 30))).closed);
   Mesh copy = quads;
   analyze_topology(std::move(copy));
+  EXPECT_TRUE(copy.vertices.empty() && copy.corners.empty());
 }
 
 TEST(TopologyMovedMesh, ToleranceWeld) {
-  Mesh m = test::unshared(test::unit_cube());
-  for (std::size_t i = 0; i < m.vertices.size(); i += 2) m.vertices[i].x += 1e-9;
-  TopologyOptions o;
-  o.weld_tolerance = 1e-6;
-  const TopologyReport r = expect_same_topology(m, o);
-  EXPECT_TRUE(r.closed);
-  EXPECT_GT(r.weld_max_moved, 0);
+  for (const Mesh& cube : {test::unit_cube(), test::unit_cube_quads()}) {
+    Mesh m = test::unshared(cube);
+    for (std::size_t i = 0; i < m.vertices.size(); i += 2) m.vertices[i].x += 1e-9;
+    TopologyOptions o;
+    o.weld_tolerance = 1e-6;
+    const TopologyReport r = expect_same_topology(m, o);
+    EXPECT_TRUE(r.closed);
+    EXPECT_GT(r.weld_max_moved, 0);
+  }
+}
+
+// The message of the exception analyze_topology(mesh, options) throws, through either overload
+// (they must agree), and that it is an E.
+template <class E>
+std::string error_of(const Mesh& mesh, const TopologyOptions& options = {}) {
+  std::string kept, moved;
+  try {
+    analyze_topology(mesh, options);
+  } catch (const E& e) {
+    kept = e.what();
+  }
+  try {
+    analyze_topology(Mesh(mesh), options);
+  } catch (const E& e) {
+    moved = e.what();
+  }
+  EXPECT_EQ(moved, kept);
+  return kept;
 }
 
 TEST(TopologyMovedMesh, BadInputThrowsTheSame) {
-  Mesh m = test::unit_cube();
-  m.corners[5] = 99;
-  EXPECT_THROW(analyze_topology(Mesh(m)), std::out_of_range);
-  TopologyOptions bad;
-  bad.weld_tolerance = -1;
-  EXPECT_THROW(analyze_topology(test::unit_cube(), bad), std::invalid_argument);
+  for (const Mesh& cube : {test::unit_cube(), test::unit_cube_quads()}) {
+    Mesh m = cube;
+    m.corners[5] = 99;
+    EXPECT_EQ(error_of<std::out_of_range>(m), "mesh: corner 5 names vertex 99 of 8");
+    m = cube;
+    m.face_offsets[2] = 1;
+    EXPECT_EQ(error_of<std::out_of_range>(m), "mesh: face offsets descend at face 1");
+    m = cube;
+    m.face_offsets.back() -= 1;
+    EXPECT_EQ(error_of<std::out_of_range>(m), "mesh: face offsets do not span the corner list");
+    TopologyOptions bad;
+    bad.weld_tolerance = -1;
+    EXPECT_EQ(error_of<std::invalid_argument>(cube, bad),
+              "weld tolerance must be a finite number >= 0");
+    bad = {};
+    bad.area_threshold = -1;
+    EXPECT_EQ(error_of<std::invalid_argument>(cube, bad),
+              "area threshold must be a finite number >= 0");
+  }
 }
 
 TEST(TopologyMovedMesh, RealMeshes) {

@@ -1,8 +1,11 @@
-// The triangle pass (triangle_topology.hpp) against the polygon pass (analyze_polygon_topology),
-// field by field and bit for bit, on meshes full of defects — random triangles on a 3×3×3 grid
-// (collapsed, duplicated, non-manifold, open, inconsistent), the defect meshes of the other
-// topology tests and the shared real meshes — and the weld of binary STL records against the weld
-// of the read mesh (classes, numbering, representatives, −0, NaN, released pages).
+// The topology pass on triangle meshes (welded_topology.hpp) on meshes full of defects — random
+// triangles on a 3×3×3 grid (collapsed, duplicated, non-manifold, open, inconsistent), the defect
+// meshes of the other topology tests and the shared real meshes: against the brute-force reference
+// (support/reference_topology.hpp), and field by field, bit for bit, against the same pass walking
+// the triangles as polygons (face_layout.hpp: the triangle layout's arithmetic and fused face sums
+// against the polygon layout's lookups and tally_face). Then the fused mass and topology pass, and
+// the weld of binary STL records against the weld of the read mesh (classes, numbering,
+// representatives, −0, NaN, released pages).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -13,14 +16,17 @@
 #include <random>
 #include <string>
 
-#include "mesh/topology/triangle_topology.hpp"
+#include "mesh/topology/welded_topology.hpp"
 #include "mesh/weld/welded_triangles.hpp"
+#include "pgamesh/geometry/reference_point.hpp"
 #include "pgamesh/io/mapped_file.hpp"
 #include "pgamesh/io/read_mesh.hpp"
 #include "pgamesh/mesh/primitives.hpp"
 #include "pgamesh/mesh/topology/topology.hpp"
+#include "pgamesh/mesh/weld/weld.hpp"
 #include "support/golden.hpp"
 #include "support/read_helpers.hpp"
+#include "support/reference_topology.hpp"
 #include "support/same_topology.hpp"
 #include "support/stl_bytes.hpp"
 #include "support/temp_file.hpp"
@@ -29,15 +35,19 @@
 namespace pgamesh {
 namespace {
 
+using test::expect_matches_reference;
 using test::expect_same_report;
 using test::same_bits;
 
-// Both passes on one triangle mesh; returns the report for further checks.
-TopologyReport expect_passes_agree(const Mesh& m, const TopologyOptions& options = {}) {
-  const TopologyReport polygon = analyze_polygon_topology(m, options);
-  const TopologyReport triangle = analyze_topology(m, options);
-  expect_same_report(triangle, polygon);
-  return triangle;
+// The report of triangle mesh m, checked against the reference and against the polygon layout;
+// returned for further checks.
+TopologyReport expect_triangle_pass(const Mesh& m, const TopologyOptions& options = {}) {
+  const TopologyReport triangles = analyze_topology(m, options);
+  expect_matches_reference(triangles, m, options);
+  const TopologyReport polygons =
+      analyze_welded_mesh(weld(m, options.weld_tolerance), reference_point(m), options);
+  expect_same_report(triangles, polygons);
+  return triangles;
 }
 
 // `faces` random triangles on the 3×3×3 grid, some vertices listed twice: every defect at once.
@@ -54,15 +64,15 @@ Mesh grid_soup(std::uint32_t seed, std::size_t faces) {
   return m;
 }
 
-TEST(TopologyTriangles, RandomGridSoupsAgreeBitForBit) {
+TEST(TopologyTriangles, RandomGridSoups) {
   TopologyOptions small_lists;
   small_lists.list_cap = 5;
   for (std::uint32_t seed = 1; seed <= 60; ++seed) {
     SCOPED_TRACE(seed);
     const Mesh m = grid_soup(seed, 4 + seed % 40);
-    const TopologyReport r = expect_passes_agree(m);
-    expect_passes_agree(m, small_lists);
-    if (seed == 40) {  // the soup does exercise the defects the passes must agree on
+    const TopologyReport r = expect_triangle_pass(m);
+    expect_triangle_pass(m, small_lists);
+    if (seed == 40) {  // the soup does exercise the defects
       EXPECT_GT(r.nonmanifold_edges + r.boundary_edges + r.inconsistent_edges, 0u);
     }
   }
@@ -85,47 +95,47 @@ TEST(TopologyTriangles, SoupsCoverEveryDefect) {
   EXPECT_GT(open_chains, 0u);
 }
 
-TEST(TopologyTriangles, DefectMeshesAgree) {
+TEST(TopologyTriangles, DefectMeshes) {
   using namespace test;
   const Mesh cube = unit_cube();
-  expect_passes_agree(cube);
-  expect_passes_agree(unshared(cube));
-  expect_passes_agree(without_faces(cube, {1, 5}));
-  expect_passes_agree(with_flipped(cube, {0, 7}));
-  expect_passes_agree(merged(cube, translated(cube, {3, 0, 0})));
-  expect_passes_agree(merged(cube, translated(cube, {1, 1, 0})));
-  expect_passes_agree(translated(icosphere(3, 2.0), {1e6, -1e6, 1e6}));
+  expect_triangle_pass(cube);
+  expect_triangle_pass(unshared(cube));
+  expect_triangle_pass(without_faces(cube, {1, 5}));
+  expect_triangle_pass(with_flipped(cube, {0, 7}));
+  expect_triangle_pass(merged(cube, translated(cube, {3, 0, 0})));
+  expect_triangle_pass(merged(cube, translated(cube, {1, 1, 0})));
+  expect_triangle_pass(translated(icosphere(3, 2.0), {1e6, -1e6, 1e6}));
   Mesh weld_me = unshared(icosphere(2, 1.0));
   for (std::size_t i = 0; i < weld_me.vertices.size(); i += 3) weld_me.vertices[i].x += 1e-9;
   TopologyOptions tolerant;
   tolerant.weld_tolerance = 1e-6;
-  const TopologyReport r = expect_passes_agree(weld_me, tolerant);
+  const TopologyReport r = expect_triangle_pass(weld_me, tolerant);
   EXPECT_TRUE(r.closed);
   EXPECT_GT(r.weld_max_moved, 0.0);
 }
 
-TEST(TopologyTriangles, LargeMeshesTakeTheTwoThreadPathAndAgree) {
+TEST(TopologyTriangles, LargeMeshesTakeTheTwoThreadPath) {
   // 81 920 triangles per sphere: the face tally runs on its own thread. Two spheres (one with
   // holes and flipped faces) make two components, whose sums take the second face pass.
   using namespace test;
   const Mesh sphere = icosphere(6, 1.0);
-  const TopologyReport one = expect_passes_agree(unshared(sphere));
+  const TopologyReport one = expect_triangle_pass(unshared(sphere));
   EXPECT_TRUE(one.closed);
   EXPECT_EQ(one.components, 1u);
   Mesh damaged = with_flipped(without_faces(sphere, {10, 11, 500, 70000}), {3, 4000, 9000});
-  const TopologyReport two = expect_passes_agree(merged(damaged, translated(sphere, {3, 0, 0})));
+  const TopologyReport two = expect_triangle_pass(merged(damaged, translated(sphere, {3, 0, 0})));
   EXPECT_EQ(two.components, 2u);
   EXPECT_GT(two.boundary_edges, 0u);
   EXPECT_GT(two.inconsistent_edges, 0u);
 }
 
-TEST(TopologyTriangles, LargeSoupsTakeTheParallelEdgePassAndAgree) {
+TEST(TopologyTriangles, LargeSoupsTakeTheParallelEdgePass) {
   // 20 000 random triangles on 35 vertices: two threads count, fill and group the half-edges
   // (every vertex a large fan, the split between the threads inside the vertex range) and share
-  // one union–find; the report must be the sequential polygon pass's.
+  // one union–find; the report must be the sequential reference's.
   for (std::uint32_t seed = 1; seed <= 2; ++seed) {
     SCOPED_TRACE(seed);
-    const TopologyReport r = expect_passes_agree(grid_soup(seed, 20000));
+    const TopologyReport r = expect_triangle_pass(grid_soup(seed, 20000));
     EXPECT_GT(r.nonmanifold_edges, 0u);
     EXPECT_GT(r.duplicated_faces, 0u);
     EXPECT_GT(r.collapsed_faces, 0u);
@@ -163,7 +173,7 @@ TEST(TopologyTriangles, MassAndTopologyInOnePassMatchTheSeparatePasses) {
       translated(merged(damaged, translated(sphere, {3, 0, 0})), {1e5, 0, -1e5}));
 }
 
-TEST(TopologyTriangles, SharedRealMeshesAgree) {
+TEST(TopologyTriangles, SharedRealMeshes) {
   if (test::shared_meshes_dir().empty())
     GTEST_SKIP() << "../shared/meshes not found (" PGAMESH_SHARED_MESHES_DIR "): skipped";
   std::size_t compared = 0;
@@ -175,7 +185,7 @@ TEST(TopologyTriangles, SharedRealMeshesAgree) {
     SCOPED_TRACE(name);
     const Mesh m = read_mesh(path);
     if (!all_triangles(m)) continue;
-    const TopologyReport r = expect_passes_agree(m);
+    const TopologyReport r = expect_triangle_pass(m);
     // A binary STL welded from its records gives the same report.
     const MappedFile file = MappedFile::open(path);
     if (const auto view = binary_stl_view(file.bytes(), path)) {

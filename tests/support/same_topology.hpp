@@ -1,6 +1,6 @@
 // Comparisons for tests that run two routes to one topology report or one set of mass properties
-// (the triangle pass against the polygon pass, a moved mesh against a copied one, a streamed file
-// against the read mesh): every field, doubles bit for bit.
+// (the triangle layout of the topology pass against its polygon layout, a moved mesh against a
+// copied one, a streamed file against the read mesh): every field, doubles bit for bit.
 #pragma once
 
 #include <gtest/gtest.h>

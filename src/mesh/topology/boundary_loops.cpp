@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "pgamesh/geometry/edge_loop.hpp"
+#include "pgamesh/mesh/topology/edges.hpp"
 
 namespace pgamesh {
 
@@ -80,26 +81,6 @@ std::vector<BoundaryLoop> trace_boundary_loops(std::span<const std::uint32_t> si
   for (std::uint32_t i = 0; i < side_count; ++i)
     if (!used[i]) trace(i);
   return loops;
-}
-
-std::vector<BoundaryLoop> boundary_loops(const Mesh& mesh, const WeldMap& weld,
-                                         std::span<const std::uint32_t> welded_corner,
-                                         const EdgeTable& edges, Vec3d reference) {
-  // The boundary half-edges, ascending.
-  std::vector<std::uint32_t> sides;
-  for (std::size_t e = 0; e < edges.edge_count(); ++e)
-    if (edges.use_count(e) == 1) sides.push_back(edges.uses_of(e)[0]);
-  if (sides.empty()) return {};
-  std::sort(sides.begin(), sides.end());
-  std::vector<std::uint32_t> tails(sides.size()), heads(sides.size());
-  for (std::size_t i = 0; i < sides.size(); ++i) {
-    tails[i] = welded_corner[sides[i]];
-    heads[i] = welded_corner[next_corner(mesh, edges, sides[i])];
-  }
-  std::vector<Vec3d> positions(weld.welded_count());
-  for (std::size_t w = 0; w < positions.size(); ++w)
-    positions[w] = mesh.vertices[weld.representative[w]];
-  return trace_boundary_loops(sides, tails, heads, positions, reference);
 }
 
 }  // namespace pgamesh

@@ -1,51 +1,42 @@
-#include "pgamesh/mesh/topology/duplicate_faces.hpp"
+#include "mesh/topology/duplicate_faces.hpp"
 
-#include <algorithm>
+#include <limits>
 
-namespace pgamesh {
+namespace pgamesh::detail {
 
-namespace {
+std::vector<std::pair<std::uint32_t, std::uint32_t>> duplicated_faces(const SameVertexRuns& runs) {
+  // Every run's members after its first (the first has no face below it in the run), by face.
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> order;  // (face, run)
+  for (std::size_t r = 0; r < runs.ends.size(); ++r)
+    for (std::size_t i = runs.begin_of(r) + 1; i < runs.ends[r]; ++i)
+      order.emplace_back(runs.members[i].face, static_cast<std::uint32_t>(r));
+  std::sort(order.begin(), order.end());
 
-void sorted_vertex_set(const Mesh& mesh, std::span<const std::uint32_t> welded_corner,
-                       std::uint32_t f, std::vector<std::uint32_t>& out) {
-  out.assign(welded_corner.begin() + mesh.face_offsets[f],
-             welded_corner.begin() + mesh.face_offsets[f + 1]);
-  std::sort(out.begin(), out.end());
-  out.erase(std::unique(out.begin(), out.end()), out.end());
-}
-
-}  // namespace
-
-std::vector<std::pair<std::uint32_t, std::uint32_t>> duplicated_faces(
-    const Mesh& mesh, const EdgeTable& edges, std::span<const std::uint32_t> welded_corner) {
-  const std::size_t face_count = mesh.face_count();
-  std::vector<std::uint32_t> same_as(face_count, no_edge);
-  std::vector<std::uint32_t> set_f, set_g;  // reused buffers
-  for (std::uint32_t f = 0; f < face_count; ++f) {
-    if (same_as[f] != no_edge) continue;  // its own duplicates were found from the earlier face
-    std::uint32_t e = no_edge;
-    for (std::uint32_t c = mesh.face_offsets[f]; c < mesh.face_offsets[f + 1]; ++c)
-      if (edges.corner_edge[c] != no_edge) {
-        e = edges.corner_edge[c];
-        break;
-      }
-    if (e == no_edge || edges.use_count(e) < 2) continue;  // collapsed, or alone on its edge
-    bool have_set = false;
-    for (std::uint32_t c : edges.uses_of(e)) {
-      const std::uint32_t g = edges.corner_face[c];
-      if (g <= f || same_as[g] != no_edge) continue;
-      if (!have_set) {
-        sorted_vertex_set(mesh, welded_corner, f, set_f);
-        have_set = true;
-      }
-      sorted_vertex_set(mesh, welded_corner, g, set_g);
-      if (set_f == set_g) same_as[g] = f;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> out;  // ascending by face
+  auto duplicated = [&](std::uint32_t f) {
+    return std::binary_search(out.begin(), out.end(), std::pair{f, std::uint32_t{0}},
+                              [](const auto& a, const auto& b) { return a.first < b.first; });
+  };
+  // Per run, the member that is its lowest first-side face not duplicated, once the faces before
+  // the one being judged are settled. Every face below the one judged is settled (faces are judged
+  // in order), so the cursor only moves on, and it stops at the judged face's own member at the
+  // latest.
+  std::vector<std::size_t> lowest(runs.ends.size());
+  for (std::size_t r = 0; r < lowest.size(); ++r) lowest[r] = runs.begin_of(r);
+  constexpr std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
+  for (std::size_t i = 0; i < order.size();) {
+    const std::uint32_t g = order[i].first;
+    std::uint32_t same_as = none;
+    for (; i < order.size() && order[i].first == g; ++i) {
+      std::size_t& c = lowest[order[i].second];
+      while (runs.members[c].face < g &&
+             (!runs.members[c].first_side_here || duplicated(runs.members[c].face)))
+        ++c;
+      if (runs.members[c].face < g) same_as = std::min(same_as, runs.members[c].face);
     }
+    if (same_as != none) out.emplace_back(g, same_as);
   }
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> out;
-  for (std::uint32_t g = 0; g < face_count; ++g)
-    if (same_as[g] != no_edge) out.emplace_back(g, same_as[g]);
   return out;
 }
 
-}  // namespace pgamesh
+}  // namespace pgamesh::detail

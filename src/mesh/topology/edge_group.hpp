@@ -1,5 +1,5 @@
 // Internal: one vertex's half-edges grouped by their upper end, the step shared by the edge table
-// (edges.cpp), the triangle pass (triangle_topology.cpp) and the PLY pass that re-reads its faces
+// (edges.cpp), the topology pass (welded_topology.cpp) and the PLY pass that re-reads its faces
 // from the file (ply_topology.cpp): after the sort, each run of equal upper ends is one edge, and
 // its uses stay in ascending half-edge order; judge_vertex_edges then judges each edge on the spot.
 #pragma once
@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "mesh/topology/duplicate_faces.hpp"
 #include "mesh/topology/union_find.hpp"
 
 namespace pgamesh::detail {
@@ -39,47 +40,34 @@ struct OddEdge {
 // What the grouping finds among the edges of a range of lower ends.
 struct EdgePart {
   std::size_t edges = 0;
-  std::vector<OddEdge> odd;                                         // in edge order
-  std::vector<std::uint32_t> sides;                                 // boundary half-edges
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> duplicates;  // (face, earlier face)
+  std::vector<OddEdge> odd;          // in edge order
+  std::vector<std::uint32_t> sides;  // boundary half-edges
+  SameVertexRuns same_vertices;      // for duplicated_faces (duplicate_faces.hpp)
 };
 
-// Judges the edges whose lower end is v. `group` holds v's half-edges of triangles (half-edge
-// h = 3 f + k runs from corner k of face f to corner (k + 1) % 3) as elements whose `first` is the
-// upper end and `second` the half-edge, sorted by sort_by_upper_end with the half-edges ascending
-// within each upper end. third(e) is the vertex of e's face off the edge (its corner (k + 2) % 3),
-// forward(e) whether e runs from v. Counts each edge, unites the faces on it in `parent` (shared
-// with other threads: union_find.hpp), and keeps the boundary sides, the edges not used exactly
-// twice in opposite directions and the duplicated faces.
-template <class Group, class Third, class Forward>
-void judge_vertex_edges(std::uint32_t v, const Group& group, const Third& third,
-                        const Forward& forward_from_v, std::uint32_t* parent, EdgePart& out) {
+// Judges the edges whose lower end is v. `group` holds v's half-edges as elements whose `first` is
+// the upper end, sorted by sort_by_upper_end with the half-edges ascending within each upper end.
+// `sides` answers for an element e: half_edge(e), face(e), runs_from(e, v) (whether e runs from
+// v), and what add_same_vertex_runs asks. Counts each edge, unites the faces on it in `parent`
+// (shared with other threads: union_find.hpp), and keeps the boundary sides, the edges not used
+// exactly twice in opposite directions and the runs of faces with the same vertices.
+template <class Group, class Sides>
+void judge_vertex_edges(std::uint32_t v, const Group& group, Sides& sides, std::uint32_t* parent,
+                        EdgePart& out) {
   for (std::size_t i = 0; i < group.size();) {
     const std::uint32_t upper = group[i].first;
     std::size_t end = i + 1;
     while (end < group.size() && group[end].first == upper) ++end;
     ++out.edges;
-    const std::uint32_t first_face = group[i].second / 3;
+    const std::uint32_t first_face = sides.face(group[i]);
     std::uint32_t forward = 0, root = first_face;
     for (std::size_t j = i; j < end; ++j) {
-      const std::uint32_t h = group[j].second;
-      forward += forward_from_v(group[j]) ? 1 : 0;
-      if (j > i) root = unite_roots_shared(parent, root, h / 3);
-      // Two triangles on this edge are the same vertex set when their third vertices agree;
-      // each face is matched on its first side (k = 0) against the lower faces on it, the
-      // lowest match first (the half-edges ascend), so each duplicate names the lowest copy.
-      if (h % 3 == 0) {
-        const std::uint32_t t = third(group[j]);
-        for (std::size_t m = i; m < j; ++m) {
-          if (third(group[m]) == t) {
-            out.duplicates.emplace_back(h / 3, group[m].second / 3);
-            break;
-          }
-        }
-      }
+      forward += sides.runs_from(group[j], v) ? 1 : 0;
+      if (j > i) root = unite_roots_shared(parent, root, sides.face(group[j]));
     }
     const auto uses = static_cast<std::uint32_t>(end - i);
-    if (uses == 1) out.sides.push_back(group[i].second);
+    if (uses > 1) add_same_vertex_runs(group, i, end, sides, out.same_vertices);
+    if (uses == 1) out.sides.push_back(sides.half_edge(group[i]));
     if (uses != 2 || forward != 1) out.odd.push_back({v, upper, first_face, uses, forward});
     i = end;
   }

@@ -4,40 +4,21 @@
 #include <utility>
 
 #include "mesh/topology/edge_group.hpp"
+#include "mesh/topology/face_layout.hpp"
 
 namespace pgamesh {
-
-namespace {
-
-// Whether the face's corners [begin, end) reach at least three distinct welded vertices.
-bool has_three_distinct(std::span<const std::uint32_t> welded_corner, std::uint32_t begin,
-                        std::uint32_t end) {
-  if (end - begin < 3) return false;
-  const std::uint32_t a = welded_corner[begin];
-  std::uint32_t i = begin + 1;
-  while (i < end && welded_corner[i] == a) ++i;
-  if (i == end) return false;
-  const std::uint32_t b = welded_corner[i];
-  for (++i; i < end; ++i)
-    if (welded_corner[i] != a && welded_corner[i] != b) return true;
-  return false;
-}
-
-}  // namespace
 
 EdgeTable build_edges(const Mesh& mesh, std::span<const std::uint32_t> welded_corner,
                       std::size_t welded_vertex_count) {
   EdgeTable t;
   const std::size_t corner_count = mesh.corners.size();
   const std::size_t face_count = mesh.face_count();
-  t.corner_face.resize(corner_count);
+  t.corner_face = detail::corner_faces(mesh.face_offsets);
   // Corners of collapsed faces are marked so that the passes below skip them.
   std::vector<std::uint8_t> skip(corner_count, 0);
   for (std::size_t f = 0; f < face_count; ++f) {
     const std::uint32_t begin = mesh.face_offsets[f], end = mesh.face_offsets[f + 1];
-    std::fill(t.corner_face.begin() + begin, t.corner_face.begin() + end,
-              static_cast<std::uint32_t>(f));
-    if (!has_three_distinct(welded_corner, begin, end)) {
+    if (detail::collapsed_face(welded_corner.data(), begin, end)) {
       t.collapsed_faces.push_back(static_cast<std::uint32_t>(f));
       std::fill(skip.begin() + begin, skip.begin() + end, std::uint8_t{1});
     }

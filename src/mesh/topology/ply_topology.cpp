@@ -1,5 +1,5 @@
 // The topology pass of a binary PLY that re-reads its faces from the file (ply_topology.hpp). It
-// follows analyze_welded_triangles (triangle_topology.cpp) step by step — the same face pass, the
+// follows analyze_welded_triangles (welded_topology.cpp) step by step — the same face pass, the
 // same edge judging (edge_group.hpp), the same parts of the report (topology_parts.hpp) — with the
 // corner array replaced by reads of the file's face records: plain binary records (every list
 // holding three indices) sit at a fixed stride, so face f is at faces + f × stride.
@@ -24,7 +24,9 @@
 #include "detail/memory/uninitialized_array.hpp"
 #include "geometry/chunked_sums.hpp"
 #include "io/ply_header.hpp"
+#include "mesh/topology/duplicate_faces.hpp"
 #include "mesh/topology/edge_group.hpp"
+#include "mesh/topology/face_layout.hpp"
 #include "mesh/topology/topology_parts.hpp"
 #include "mesh/weld/weld_table.hpp"
 #include "pgamesh/core/bounding_box.hpp"
@@ -116,7 +118,7 @@ std::optional<PlainPly> plain_ply(std::span<const char> bytes, const detail::Hea
     }
   }
   // Welded vertices leave their top bit to a half-edge's direction, and half-edge ids
-  // 3 f + k must fit 32 bits (as in triangle_topology.cpp).
+  // 3 f + k must fit 32 bits (as in welded_topology.cpp).
   if (ve.count >= (std::uint64_t{1} << 31) || fe.count == 0 ||
       fe.count > std::numeric_limits<std::uint32_t>::max() / 3)
     return std::nullopt;
@@ -275,6 +277,21 @@ struct HalfEdge {
 };
 constexpr std::uint32_t runs_from_lower = 0x80000000u;
 
+// What judge_vertex_edges asks about a HalfEdge: TriangleLayout's answers (face_layout.hpp), with
+// the third vertex and the direction taken from the record instead of a corner array.
+struct HalfEdgeSides {
+  static std::uint32_t half_edge(const HalfEdge& e) { return e.second; }
+  static std::uint32_t face(const HalfEdge& e) { return detail::TriangleLayout::face_of(e.second); }
+  static bool runs_from(const HalfEdge& e, std::uint32_t) {
+    return (e.third_and_direction & runs_from_lower) != 0;  // v is the lower end
+  }
+  static bool first_side(const HalfEdge& e) { return detail::TriangleLayout::first_side(e.second); }
+  // Two triangles on one edge with the same vertex off it.
+  static bool same_vertices(const HalfEdge& a, const HalfEdge& b) {
+    return ((a.third_and_direction ^ b.third_and_direction) & ~runs_from_lower) == 0;
+  }
+};
+
 // The pass over one file: the steps of analyze_welded_triangles with the corners read from the
 // face records.
 template <class Bits>
@@ -320,7 +337,7 @@ class PlyPass {
     release.finish(ply_.faces_end());
   }
 
-  // The face pass (triangle_topology.cpp's face_pass, the faces read in order): the mass sums in
+  // The face pass (welded_topology.cpp's face_pass, the faces read in order): the mass sums in
   // chunked_sums' chunks and each face's tally; the collapsed faces, the referenced vertices and
   // the half-edges per lower end. False when a face is not a triangle or names no vertex.
   bool face_pass(Vec3d reference, detail::TopologyTally& tally, BoundarySums& sums) {
@@ -368,7 +385,7 @@ class PlyPass {
   // The edge pass in ranges of lower ends holding at most `budget` half-edges each (one vertex's
   // more when it alone has more): per range, one read of the faces buckets the range's
   // half-edges by lower end (a counting sort, the buckets ascending as the faces are read in
-  // order), then each vertex's bucket is grouped and judged as in triangle_topology.cpp.
+  // order), then each vertex's bucket is grouped and judged as in welded_topology.cpp.
   void edge_pass(std::size_t budget) {
     const auto vertices = static_cast<std::uint32_t>(weld_.positions.size());
     std::uint32_t total = 0;
@@ -387,6 +404,7 @@ class PlyPass {
     for (std::size_t f = 0; f < ply_.face_count; ++f) parent_[f] = static_cast<std::uint32_t>(f);
     const detail::UninitializedArray<HalfEdge> bucket =
         detail::uninitialized_array<HalfEdge>(largest);
+    HalfEdgeSides sides;
     for (const auto& range : ranges) {
       const std::uint32_t a = range.first, b = range.second;  // a lambda cannot capture a binding
       const std::uint32_t base = start_[a], width = b - a;
@@ -405,10 +423,7 @@ class PlyPass {
         HalfEdge* begin = bucket.get() + ((v == a ? base : start_[v - 1]) - base);
         std::span<HalfEdge> group(begin, bucket.get() + (start_[v] - base));
         detail::sort_by_upper_end(group);
-        detail::judge_vertex_edges(
-            v, group, [](const HalfEdge& e) { return e.third_and_direction & ~runs_from_lower; },
-            [](const HalfEdge& e) { return (e.third_and_direction & runs_from_lower) != 0; },
-            parent_.get(), edges);
+        detail::judge_vertex_edges(v, group, sides, parent_.get(), edges);
       }
     }
     std::vector<std::uint32_t>().swap(start_);
@@ -528,7 +543,6 @@ std::optional<WeldedTriangleProps> plain_ply_props(std::span<const char> bytes,
     detail::tally_edge(tally, odd[i].v0, odd[i].v1, odd[i].face, odd[i].uses, odd[i].forward,
                        odd_component[i]);
   std::vector<std::uint32_t>& sides = pass.edges.sides;
-  std::sort(pass.edges.duplicates.begin(), pass.edges.duplicates.end());
   std::sort(sides.begin(), sides.end());
   std::vector<std::uint32_t> tails(sides.size()), heads(sides.size());
   for (std::size_t i = 0; i < sides.size(); ++i) {
@@ -536,7 +550,7 @@ std::optional<WeldedTriangleProps> plain_ply_props(std::span<const char> bytes,
     tails[i] = faces.corner_lookup(h);
     heads[i] = faces.corner_lookup(h % 3 == 2 ? h - 2 : h + 1);
   }
-  detail::finish_report(tally, pass.edges.duplicates,
+  detail::finish_report(tally, detail::duplicated_faces(pass.edges.same_vertices),
                         trace_boundary_loops(sides, tails, heads, positions, reference));
   if (several_components) pass.free_faces();
 

@@ -1,5 +1,5 @@
 // Mass properties and topology of a binary PLY triangle mesh without its face list. A Mesh, or
-// even the welded triangles of triangle_topology.hpp, would hold 12 bytes of corners per triangle
+// even the welded triangles of welded_triangles.hpp, would hold 12 bytes of corners per triangle
 // — nearly the 13 bytes the file spends on each face — on top of the vertices, a union–find and
 // the edge pass's buckets. This pass keeps the welded vertices (float32 or float64, as the file
 // gives them), one union–find entry per face and the half-edges of one range of lower-end vertices
@@ -12,7 +12,7 @@
 #include <span>
 #include <string>
 
-#include "mesh/topology/triangle_topology.hpp"
+#include "mesh/topology/welded_topology.hpp"
 #include "pgamesh/core/mesh.hpp"
 #include "pgamesh/mesh/mass/mass_properties.hpp"
 #include "pgamesh/mesh/topology/topology.hpp"

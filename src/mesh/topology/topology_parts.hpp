@@ -1,7 +1,8 @@
-// The parts of the topology pass that the polygon pass (topology.cpp) and the triangle pass
-// (triangle_topology.cpp) share: how a face and an edge count in the report, and how the report
-// is finished. Both passes feed them the same faces and edges in the same order, so they give the
-// same report bit for bit. Internal to the library.
+// The parts of the topology report shared by the topology pass (welded_topology.cpp, both its face
+// layouts) and the PLY pass that re-reads its faces from the file (ply_topology.cpp): how a face
+// and an edge count in the report, and how the report is finished. Every route feeds them the same
+// faces and edges in the same order, so they give the same report bit for bit. Internal to the
+// library.
 #pragma once
 
 #include <array>
@@ -69,8 +70,8 @@ void tally_face(TopologyTally& t, std::uint32_t f, bool collapsed);
 // Triangle f whose corners are `corner` (welded coordinates) and whose carrier about
 // r.reference_point is `carrier` (triangle_carrier of the corners minus the reference point, as
 // add_triangle forms it): what tally_face does for a triangle, without forming the carrier again —
-// the fast triangle pass computes it and its norm (pga3::norm(carrier)) once for the mass sums
-// and the tally.
+// the pass on welded triangles computes it and its norm (pga3::norm(carrier)) once for the mass
+// sums and the tally.
 void tally_triangle(TopologyTally& t, std::uint32_t f, bool collapsed,
                     const std::array<Vec3d, 3>& corner, const pga3::Plane<double>& carrier,
                     double carrier_norm);

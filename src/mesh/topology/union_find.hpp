@@ -1,4 +1,4 @@
-// Internal: the union–find of the face components (components.cpp, triangle_topology.cpp).
+// Internal: the union–find of the face components (components.cpp, welded_topology.cpp).
 #pragma once
 
 #include <atomic>

@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 #include <unordered_map>
+#include <utility>
 
 #include "mesh/weld/weld_table.hpp"
 
@@ -155,11 +156,19 @@ WeldMap weld_map_compacting(std::vector<Vec3d>& vertices, double tolerance) {
   return map;
 }
 
-WeldResult weld(const Mesh& mesh, double tolerance) {
+namespace {
+
+void check_corner_range(const Mesh& mesh) {
   for (std::uint32_t c : mesh.corners)
     if (c >= mesh.vertices.size())
       throw std::out_of_range("weld: corner index " + std::to_string(c) + " out of range (" +
                               std::to_string(mesh.vertices.size()) + " vertices)");
+}
+
+}  // namespace
+
+WeldResult weld(const Mesh& mesh, double tolerance) {
+  check_corner_range(mesh);
   WeldResult r;
   r.map = weld_map(mesh.vertices, tolerance);
   r.mesh.vertices.reserve(r.map.welded_count());
@@ -168,6 +177,16 @@ WeldResult weld(const Mesh& mesh, double tolerance) {
   for (std::size_t c = 0; c < mesh.corners.size(); ++c)
     r.mesh.corners[c] = r.map.to_welded[mesh.corners[c]];
   r.mesh.face_offsets = mesh.face_offsets;
+  return r;
+}
+
+WeldResult weld(Mesh&& mesh, double tolerance) {
+  check_corner_range(mesh);
+  WeldResult r;
+  r.map = weld_map_compacting(mesh.vertices, tolerance);
+  for (std::uint32_t& c : mesh.corners) c = r.map.to_welded[c];
+  r.mesh = std::move(mesh);
+  mesh = Mesh{};
   return r;
 }
 

@@ -1,8 +1,8 @@
 // A welded triangle mesh in its leanest form: the welded vertices' coordinates and three welded
-// vertex indices per triangle. It is what the fast topology pass (triangle_topology.hpp) reads, and
-// a binary STL is welded into it straight from its float32 records, without building a Mesh of
-// three fresh double vertices per facet first (4× smaller, and the file's pages can be released as
-// the weld passes them).
+// vertex indices per triangle. It is what the topology pass on triangles (welded_topology.hpp)
+// reads, and a binary STL is welded into it straight from its float32 records, without building a
+// Mesh of three fresh double vertices per facet first (4× smaller, and the file's pages can be
+// released as the weld passes them).
 #pragma once
 
 #include <cstddef>

@@ -9,10 +9,7 @@
 #include <span>
 #include <vector>
 
-#include "pgamesh/core/mesh.hpp"
 #include "pgamesh/core/vec3.hpp"
-#include "pgamesh/mesh/topology/edges.hpp"
-#include "pgamesh/mesh/weld/weld.hpp"
 
 namespace pgamesh {
 
@@ -26,17 +23,12 @@ struct BoundaryLoop {
   double perimeter = 0;
 };
 
-// The boundary loops in a deterministic order. Chains are traced from the lowest unused boundary
-// half-edge, open chains first (from vertices with more outgoing than incoming boundary sides); at
-// a vertex where several boundary sides leave (two holes touching) the lowest unused one is taken.
-// Coordinates are those of the welded representatives, taken relative to `reference`.
-std::vector<BoundaryLoop> boundary_loops(const Mesh& mesh, const WeldMap& weld,
-                                         std::span<const std::uint32_t> welded_corner,
-                                         const EdgeTable& edges, Vec3d reference);
-
-// The same tracing for boundary sides given directly: sides[i] is a boundary half-edge (its corner;
-// ascending), running from welded vertex tails[i] to heads[i]; positions[w] are the welded
-// vertices' coordinates. boundary_loops() and the triangle pass (triangle_topology.hpp) share it.
+// The boundary loops through the boundary sides, in a deterministic order: sides[i] is a boundary
+// half-edge (its corner; ascending), running from welded vertex tails[i] to heads[i]. Chains are
+// traced from the lowest unused boundary half-edge, open chains first (from vertices with more
+// outgoing than incoming boundary sides); at a vertex where several boundary sides leave (two
+// holes touching) the lowest unused one is taken. Coordinates are positions[w], the welded
+// vertices' (their representatives'), taken relative to `reference`.
 std::vector<BoundaryLoop> trace_boundary_loops(std::span<const std::uint32_t> sides,
                                                std::span<const std::uint32_t> tails,
                                                std::span<const std::uint32_t> heads,

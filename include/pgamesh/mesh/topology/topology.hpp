@@ -113,21 +113,16 @@ struct TopologyReport {
   double volume_ambiguity() const { return volume_max - volume_min; }
 };
 
-// Welds (exactly, or within options.weld_tolerance), builds the edges and reports on them. Throws
-// std::out_of_range for corner indices beyond the vertex list and std::invalid_argument for a bad
-// option; the mesh itself may be anything (empty, open, non-manifold, degenerate). A mesh of
-// triangles only takes the triangle pass (triangle_topology.hpp), any other the polygon pass
-// below; both give the same report.
+// Welds (exactly, or within options.weld_tolerance), finds the edges and reports on them, in one
+// pass for faces of any size (welded_topology.hpp). Throws std::out_of_range for corner indices
+// beyond the vertex list and std::invalid_argument for a bad option; the mesh itself may be
+// anything (empty, open, non-manifold, degenerate).
 TopologyReport analyze_topology(const Mesh& mesh, const TopologyOptions& options = {});
 
-// The same report from a mesh the caller no longer needs: a mesh of triangles is welded and its
-// arrays are freed before the triangle pass allocates its own, so the two never coexist at the
-// peak (the polygon pass reads the mesh throughout and keeps it).
+// The same report from a mesh the caller no longer needs: it is welded in its own arrays (the
+// coordinates compacted, the corners renumbered in place), so no second copy of them exists at the
+// peak. The mesh is left empty.
 TopologyReport analyze_topology(Mesh&& mesh, const TopologyOptions& options = {});
-
-// The pass for faces of any size: weld_map, build_edges, face_components, duplicated_faces and
-// boundary_loops, each over the whole mesh.
-TopologyReport analyze_polygon_topology(const Mesh& mesh, const TopologyOptions& options = {});
 
 // A mesh's structure is usable: face_offsets starts at 0, ascends and ends at corners.size(), and
 // every corner names an existing vertex. Throws std::out_of_range otherwise.

@@ -50,7 +50,13 @@ struct WeldResult {
   WeldMap map;
 };
 
-// Welds the vertices of `mesh` (see weld_map) and renumbers its corners.
+// Welds the vertices of `mesh` (see weld_map) and renumbers its corners. Throws
+// std::out_of_range for a corner index beyond the vertex list, and weld_map's exceptions.
 WeldResult weld(const Mesh& mesh, double tolerance = 0);
+
+// The same weld of a mesh the caller no longer needs, in its own arrays: the vertices compacted by
+// weld_map_compacting and the corners renumbered in place, so no second copy of either exists. The
+// mesh is left empty. Same results and exceptions as above.
+WeldResult weld(Mesh&& mesh, double tolerance = 0);
 
 }  // namespace pgamesh
