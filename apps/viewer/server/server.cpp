@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <new>
 #include <regex>
+#include <stdexcept>
 #include <thread>
 
 #include "assets.hpp"
@@ -197,6 +198,8 @@ void add_routes(httplib::Server& svr, const ServerOptions& options, const HostCh
               } catch (const std::invalid_argument& e) {
                 send_error(res, 422, m->name + ": " + e.what());
               } catch (const std::out_of_range& e) {
+                send_error(res, 422, m->name + ": " + e.what());
+              } catch (const std::range_error& e) {  // figures beyond double's range
                 send_error(res, 422, m->name + ": " + e.what());
               }
             }
