@@ -2,6 +2,7 @@
 
 #include <httplib.h>
 #include <pthread.h>
+#include <sys/socket.h>
 
 #include <algorithm>
 #include <atomic>
@@ -46,6 +47,8 @@ constexpr std::size_t kWorkerThreads = 32;
 constexpr time_t kReadWriteTimeoutSeconds = 5;
 constexpr time_t kKeepAliveSeconds = 2;
 constexpr std::size_t kKeepAliveRequests = 100;
+// Pending connections the kernel holds before the accept loop takes them (httplib says 5).
+constexpr int kListenBacklog = 1024;
 constexpr std::size_t kMaxBoundarySegments = 100000;
 
 // What a path may be asked with: "GET" (HEAD included), "POST", or nothing (unknown path).
@@ -321,9 +324,12 @@ int run_server(const ServerOptions& options) {
         return 413;
       });
   // Not httplib's default SO_REUSEPORT: a second server on a busy port must fail, not share it.
-  svr.set_socket_options([](socket_t sock) {
+  // The socket is kept to widen its accept backlog after the bind (below).
+  socket_t listening = INVALID_SOCKET;
+  svr.set_socket_options([&listening](socket_t sock) {
     int yes = 1;
     setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
+    listening = sock;
   });
   // httplib gives each connection a worker thread while it is open, idle keep-alive included:
   // enough workers for a few browser tabs (6 connections each) and short idle keep-alives.
@@ -342,6 +348,12 @@ int run_server(const ServerOptions& options) {
                  options.host.c_str(), options.port);
     return 1;
   }
+  // httplib 0.11.4 listens with a backlog of 5: a burst of connections overflowed it, and the
+  // kernel's SYN-cookie fallback then lost the first bytes of requests or left connections
+  // without data until the 2 s keep-alive wait closed them (tests/viewer/load.test.mjs, 50 slow
+  // clients connecting at once). Listening again on Linux only changes the backlog.
+  if (listening != INVALID_SOCKET && ::listen(listening, kListenBacklog) != 0)
+    std::fprintf(stderr, "pgamesh serve: could not widen the accept backlog; continuing\n");
   const HostCheck hosts = host_check_for(options.host, port, options.allow_remote);
   add_routes(svr, options, hosts, assets, store);
   const bool ipv6 = options.host.find(':') != std::string::npos;
