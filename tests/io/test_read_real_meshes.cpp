@@ -1,11 +1,14 @@
 // The real OBJ, PLY and OFF files of ../shared/meshes (see its README): face and vertex counts,
-// polygon sizes, and the signed volume's sign where the README states the orientation.
+// polygon sizes, and the signed volume's sign where the README states the orientation. The GPL
+// files (conway-tI.obj, mushroom.off) are not bundled: their tests are extras, run only when the
+// file is there, and files of our own written here check the same on a lone clone.
 #include <gtest/gtest.h>
 
 #include <map>
 
 #include "pgamesh/io/read_mesh.hpp"
 #include "support/read_helpers.hpp"
+#include "support/temp_file.hpp"
 
 namespace pgamesh {
 namespace {
@@ -25,8 +28,42 @@ TEST(ReadRealMeshes, ShuttleObjHasTrianglesAndQuads) {
   EXPECT_GE(src.groups, 1u);
 }
 
+TEST(ReadOwnMeshes, ObjPrismsKeepPentagonsAndHexagons) {
+  // Our own OBJ: prisms of height 1 over the convex pentagon (0,0) (2,0) (3,2) (1,3) (−1,2) (area 8
+  // by the shoelace formula) and the hexagon (2,0) (1,2) (−1,2) (−2,0) (−1,−2) (1,−2) (area 12, at
+  // z 2..3), both counter-clockwise seen from +z: volume 8 + 12 = 20, six times it 120.
+  const test::TempFile obj(".obj",
+                           "v 0 0 0\nv 2 0 0\nv 3 2 0\nv 1 3 0\nv -1 2 0\n"
+                           "v 0 0 1\nv 2 0 1\nv 3 2 1\nv 1 3 1\nv -1 2 1\n"
+                           "f 5 4 3 2 1\nf 6 7 8 9 10\n"
+                           "f 1 2 7 6\nf 2 3 8 7\nf 3 4 9 8\nf 4 5 10 9\nf 5 1 6 10\n"
+                           "v 2 0 2\nv 1 2 2\nv -1 2 2\nv -2 0 2\nv -1 -2 2\nv 1 -2 2\n"
+                           "v 2 0 3\nv 1 2 3\nv -1 2 3\nv -2 0 3\nv -1 -2 3\nv 1 -2 3\n"
+                           "f 16 15 14 13 12 11\nf 17 18 19 20 21 22\n"
+                           "f 11 12 18 17\nf 12 13 19 18\nf 13 14 20 19\n"
+                           "f 14 15 21 20\nf 15 16 22 21\nf 16 11 17 22\n");
+  const Mesh m = read_mesh(obj.path());
+  EXPECT_EQ(polygon_sizes(m), (std::map<std::size_t, std::size_t>{{4, 11}, {5, 2}, {6, 2}}));
+  EXPECT_EQ(m.vertices.size(), 22u);
+  EXPECT_EQ(test::six_volume(m), 120.0);  // integer coordinates: exact
+}
+
+TEST(ReadOwnMeshes, OffTrianglesAndQuadInward) {
+  // Our own OFF: the square pyramid over [0,2]² at z = 0 with apex (1,1,3), every face wound
+  // clockwise seen from outside: volume −(4·3/3) = −4, six times it −24.
+  const test::TempFile off(".off",
+                           "OFF\n5 5 0\n0 0 0\n2 0 0\n2 2 0\n0 2 0\n1 1 3\n"
+                           "4 0 1 2 3\n3 0 4 1\n3 1 4 2\n3 2 4 3\n3 3 4 0\n");
+  MeshSource src;
+  const Mesh m = read_mesh(off.path(), &src);
+  EXPECT_EQ(src.format, MeshFormat::off);
+  EXPECT_EQ(m.vertices.size(), 5u);
+  EXPECT_EQ(polygon_sizes(m), (std::map<std::size_t, std::size_t>{{3, 4}, {4, 1}}));
+  EXPECT_EQ(test::six_volume(m), -24.0);
+}
+
 TEST(ReadRealMeshes, ConwayTruncatedIcosahedronObjHasPentagonsAndHexagons) {
-  SHARED_MESH_OR_SKIP(path, "npm/conway-tI.obj");
+  SHARED_MESH_EXTRA(path, "npm/conway-tI.obj");
   const Mesh m = read_mesh(path);
   EXPECT_EQ(polygon_sizes(m), (std::map<std::size_t, std::size_t>{{5, 12}, {6, 20}}));
   EXPECT_EQ(m.vertices.size(), 60u);
@@ -74,7 +111,7 @@ TEST(ReadRealMeshes, DodecahedronPlyHasTwelveInwardPentagons) {
 }
 
 TEST(ReadRealMeshes, MushroomOffHasTrianglesAndQuadsInward) {
-  SHARED_MESH_OR_SKIP(path, "geomview/mushroom.off");
+  SHARED_MESH_EXTRA(path, "geomview/mushroom.off");
   MeshSource src;
   const Mesh m = read_mesh(path, &src);
   EXPECT_EQ(src.format, MeshFormat::off);

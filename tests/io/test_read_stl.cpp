@@ -1,5 +1,5 @@
 // STL readers: ASCII and binary, detection by size arithmetic, every bad-input case with its exact
-// position, and the real files of ../shared/meshes/stl-models.
+// position, STL files of our own, and the real files of ../shared/meshes/stl-models (extras).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -7,7 +7,10 @@
 
 #include "io/stl_binary.hpp"
 #include "pgamesh/io/read_mesh.hpp"
+#include "support/nested_shells.hpp"
 #include "support/read_helpers.hpp"
+#include "support/stl_bytes.hpp"
+#include "support/temp_file.hpp"
 
 namespace pgamesh {
 namespace {
@@ -256,12 +259,47 @@ TEST(ReadStlBinary, ForcedStlStillDecidesAsciiOrBinaryBySize) {
   EXPECT_TEXT_ERROR(read_error("v 0 0 0\n", MeshFormat::stl_binary), 1u, 1u, "expected 'solid'");
 }
 
-// ---- the real files of ../shared/meshes
-// ------------------------------------------------------------
+// ---- the real files of ../shared/meshes ------------------------------------------------------
+// Extras: stl-models has no stated licence and OpenSCAD's file is GPL, so neither is bundled; each
+// runs only when the file is there. Their properties on input of our own: the quad facet, the
+// binary header starting with "solid", the wrong declared count (above), the tetrahedron of volume
+// 1 (TopologyOwnMeshes, MassStl), and the two tests just below.
+
+TEST(ReadStlOwn, EmptyFileIsAnError) {
+  const test::TempFile file(".stl", "");
+  try {
+    read_mesh(file.path());
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_BYTE_ERROR(e, 0u, "empty file");
+  }
+}
+
+TEST(ReadStlOwn, TorusAsciiAndBinaryAgreeToSevenDigits) {
+  // A torus of our own (radii 2 and 1, 24 × 12 quads fanned to 576 triangles), written as ASCII STL
+  // with 7 significant digits and as binary STL.
+  const Mesh torus = test::torus_mesh(2, 1, 24, 12, Vec3d{0, 0, 0}, true);
+  const std::vector<char> bytes = test::binary_stl_bytes(torus);
+  const test::TempFile ascii_file(".stl", test::ascii_stl_text(torus));
+  const test::TempFile binary_file(".stl", {bytes.data(), bytes.size()});
+  MeshSource sa, sb;
+  const Mesh a = read_mesh(ascii_file.path(), &sa);
+  const Mesh b = read_mesh(binary_file.path(), &sb);
+  EXPECT_EQ(sa.format, MeshFormat::stl_ascii);
+  EXPECT_EQ(sb.format, MeshFormat::stl_binary);
+  ASSERT_EQ(a.face_count(), 576u);
+  ASSERT_EQ(b.face_count(), 576u);
+  ASSERT_EQ(a.vertices.size(), b.vertices.size());
+  // 7 significant digits: relative rounding ≤ 5e-7, plus float32's 6e-8.
+  for (std::size_t i = 0; i < a.vertices.size(); ++i)
+    for (int k = 0; k < 3; ++k)
+      ASSERT_NEAR(a.vertices[i][k], b.vertices[i][k], 6e-7 * std::abs(b.vertices[i][k]))
+          << "vertex " << i << " axis " << k;
+}
 
 TEST(ReadStlReal, GearwheelAsciiAndBinaryAgreeToSevenDigits) {
-  SHARED_MESH_OR_SKIP(ascii_path, "stl-models/gearwheel.ascii.stl");
-  SHARED_MESH_OR_SKIP(binary_path, "stl-models/gearwheel.bin.stl");
+  SHARED_MESH_EXTRA(ascii_path, "stl-models/gearwheel.ascii.stl");
+  SHARED_MESH_EXTRA(binary_path, "stl-models/gearwheel.bin.stl");
   MeshSource sa, sb;
   const Mesh a = read_mesh(ascii_path, &sa);
   const Mesh b = read_mesh(binary_path, &sb);
@@ -278,7 +316,7 @@ TEST(ReadStlReal, GearwheelAsciiAndBinaryAgreeToSevenDigits) {
 }
 
 TEST(ReadStlReal, WrongHeaderReadsAsBinary) {
-  SHARED_MESH_OR_SKIP(path, "stl-models/wrongHeader.bin.stl");
+  SHARED_MESH_EXTRA(path, "stl-models/wrongHeader.bin.stl");
   MeshSource src;
   const Mesh m = read_mesh(path, &src);
   EXPECT_EQ(src.format, MeshFormat::stl_binary);
@@ -287,14 +325,14 @@ TEST(ReadStlReal, WrongHeaderReadsAsBinary) {
 }
 
 TEST(ReadStlReal, TetrahedronIrregularHasVolumeOne) {
-  SHARED_MESH_OR_SKIP(path, "stl-models/tetrahedronIrregular.bin.stl");
+  SHARED_MESH_EXTRA(path, "stl-models/tetrahedronIrregular.bin.stl");
   const Mesh m = read_mesh(path);
   EXPECT_EQ(m.face_count(), 4u);
   EXPECT_DOUBLE_EQ(test::six_volume(m) / 6, 1.0);  // vertices (0,0,0) (3,0,0) (0,2,0) (0,0,1)
 }
 
 TEST(ReadStlReal, IncorrectFaceCounterIsAnErrorWithBothNumbers) {
-  SHARED_MESH_OR_SKIP(path, "stl-models/incorrectFaceCounter.bin.stl");
+  SHARED_MESH_EXTRA(path, "stl-models/incorrectFaceCounter.bin.stl");
   try {
     read_mesh(path);
     FAIL() << "expected an InputError";
@@ -306,7 +344,7 @@ TEST(ReadStlReal, IncorrectFaceCounterIsAnErrorWithBothNumbers) {
 }
 
 TEST(ReadStlReal, QuadAsciiHasThreeTrianglesAndOneQuad) {
-  SHARED_MESH_OR_SKIP(path, "stl-models/quad.ascii.stl");
+  SHARED_MESH_EXTRA(path, "stl-models/quad.ascii.stl");
   MeshSource src;
   const Mesh m = read_mesh(path, &src);
   ASSERT_EQ(m.face_count(), 4u);
@@ -317,7 +355,7 @@ TEST(ReadStlReal, QuadAsciiHasThreeTrianglesAndOneQuad) {
 }
 
 TEST(ReadStlReal, EmptyFileIsAnError) {
-  SHARED_MESH_OR_SKIP(path, "stl-models/empty.stl");
+  SHARED_MESH_EXTRA(path, "stl-models/empty.stl");
   try {
     read_mesh(path);
     FAIL() << "expected an InputError";
@@ -327,8 +365,8 @@ TEST(ReadStlReal, EmptyFileIsAnError) {
 }
 
 TEST(ReadStlReal, BunnyBinaryAndBackToBackAscii) {
-  SHARED_MESH_OR_SKIP(bunny, "npm/bunny.stl");
-  SHARED_MESH_OR_SKIP(b2b, "openscad-testing-data/issue1580-back-to-back.stl");
+  SHARED_MESH_EXTRA(bunny, "npm/bunny.stl");
+  SHARED_MESH_EXTRA(b2b, "openscad-testing-data/issue1580-back-to-back.stl");
   EXPECT_EQ(read_mesh(bunny).face_count(), 3674u);
   EXPECT_EQ(read_mesh(b2b).face_count(), 10u);
 }

@@ -175,8 +175,23 @@ TEST(MassCli, UrdfAndMjcf) {
   EXPECT_EQ(body.find("--"), std::string::npos);
 }
 
+TEST(MassCli, OwnInwardCubeReportsNegativeVolume) {
+  // Our own inward mesh: the unit cube with every face wound clockwise seen from outside.
+  const pgamesh::test::TempFile obj(".obj",
+                                    "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
+                                    "v 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+                                    "f 1 2 3 4\nf 5 8 7 6\nf 1 5 6 2\n"
+                                    "f 2 6 7 3\nf 3 7 8 4\nf 4 8 5 1\n");
+  const CliRun r = run_cli("props \"" + obj.path() + "\" --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const json got = parse_json(r.out);
+  EXPECT_EQ(got["volume"].get<double>(), -1);  // integer corners: exact
+  EXPECT_EQ(got["volume_valid"], false);
+}
+
 TEST(MassCli, InwardMeshReportsNegativeVolume) {
-  REQUIRE_REAL_MESHES("geomview/mushroom.off");
+  // Extra: the inward mushroom of geomview (GPL, not bundled).
+  EXTRA_WITH_REAL_MESHES("geomview/mushroom.off");
   const std::string dir = pgamesh::test::shared_meshes_dir();
   const CliRun r = run_cli("props \"" + dir + "/geomview/mushroom.off\" --json");
   ASSERT_EQ(r.status, 0) << r.err;

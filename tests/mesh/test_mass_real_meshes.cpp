@@ -1,13 +1,18 @@
 // Real meshes nobody on this project wrote (../shared/meshes, read in place): closed meshes give
 // positive volumes that agree across formats and with exact rational arithmetic; inward meshes
-// give negative volumes, reported as such.
+// give negative volumes, reported as such. A test of a file that is not bundled (its licence) is an
+// extra, run only with ../shared/meshes; a mesh of our own, built in code, covers its property on a
+// lone clone.
 #include <gtest/gtest.h>
 
 #include "pgamesh/core/bounding_box.hpp"
 #include "pgamesh/io/read_mesh.hpp"
 #include "pgamesh/mesh/mass/mass_properties.hpp"
 #include "support/golden.hpp"
+#include "support/nested_shells.hpp"
 #include "support/solids.hpp"
+#include "support/stl_bytes.hpp"
+#include "support/temp_file.hpp"
 
 #ifdef PGAMESH_HAVE_GMP
 #include "support/exact_mass.hpp"
@@ -24,11 +29,15 @@ struct Loaded {
   MassProperties props;
 };
 
-Loaded load(const std::string& relative) {
+Loaded load_path(const std::string& path) {
   Loaded l;
-  l.mesh = read_mesh(pgamesh::test::shared_meshes_dir() + "/" + relative, &l.source);
+  l.mesh = read_mesh(path, &l.source);
   l.props = mass_properties(l.mesh, {}, &l.source);
   return l;
+}
+
+Loaded load(const std::string& relative) {
+  return load_path(pgamesh::test::shared_meshes_dir() + "/" + relative);
 }
 
 #define REQUIRE_SHARED_MESHES() \
@@ -51,7 +60,7 @@ void expect_exact([[maybe_unused]] const Loaded& l) {
 }  // namespace
 
 TEST(MassRealMeshes, GearwheelAsciiAndBinaryAgree) {
-  REQUIRE_REAL_MESHES("stl-models/gearwheel.ascii.stl", "stl-models/gearwheel.bin.stl");
+  EXTRA_WITH_REAL_MESHES("stl-models/gearwheel.ascii.stl", "stl-models/gearwheel.bin.stl");
   const Loaded a = load("stl-models/gearwheel.ascii.stl"), b = load("stl-models/gearwheel.bin.stl");
   EXPECT_EQ(a.props.triangles, 2444u);
   EXPECT_GT(a.props.volume, 0);
@@ -62,6 +71,47 @@ TEST(MassRealMeshes, GearwheelAsciiAndBinaryAgree) {
   EXPECT_LT(a.props.gap_area, 1e-9 * a.props.area);
   expect_exact(a);
   expect_exact(b);
+}
+
+TEST(MassOwnMeshes, TorusAsciiAndBinaryStlAgree) {
+  // Our own genus-1 solid, in place of the gear wheel: a torus (radii 2 and 1) of 24 × 12 quads,
+  // fanned into 576 triangles, written as ASCII STL (7 significant digits) and binary (float32).
+  const Mesh torus = pgamesh::test::torus_mesh(2, 1, 24, 12, Vec3d{0, 0, 0}, true);
+  const std::string text = pgamesh::test::ascii_stl_text(torus);
+  const std::vector<char> bytes = pgamesh::test::binary_stl_bytes(torus);
+  const pgamesh::test::TempFile ascii_file(".stl", text);
+  const pgamesh::test::TempFile binary_file(".stl", {bytes.data(), bytes.size()});
+  const Loaded a = load_path(ascii_file.path()), b = load_path(binary_file.path());
+  EXPECT_EQ(a.source.format, MeshFormat::stl_ascii);
+  EXPECT_EQ(b.source.format, MeshFormat::stl_binary);
+  EXPECT_EQ(a.props.triangles, 576u);
+  EXPECT_EQ(b.props.triangles, 576u);
+  EXPECT_GT(a.props.volume, 0);
+  // Both round the same doubles, to 5e-7 and 6e-8 relative: the figures agree to ~1e-6.
+  EXPECT_NEAR(a.props.volume, b.props.volume, 1e-6 * a.props.volume);
+  EXPECT_NEAR(length(a.props.center_of_mass - b.props.center_of_mass), 0,
+              1e-6 * bounding_box(a.mesh.vertices).diagonal());
+  EXPECT_LT(a.props.gap_area, 1e-9 * a.props.area);
+  expect_exact(a);
+  expect_exact(b);
+}
+
+TEST(MassOwnMeshes, InsideOutTorusReportsNegativeVolume) {
+  // Our own inward closed mesh, in place of the mushroom: the torus above with every quad facing
+  // in, beside the bundled inward dodecahedron.
+  Loaded own;
+  own.mesh = pgamesh::test::torus_mesh(2, 1, 24, 12, Vec3d{0, 0, 0}, false);
+  own.props = mass_properties(own.mesh, {}, &own.source);
+  const Loaded dodecahedron = load("octave-matgeom/dodecahedron.ply");
+  for (const Loaded* l : {static_cast<const Loaded*>(&own), &dodecahedron}) {
+    EXPECT_LT(l->props.volume, 0);  // not abs()'d
+    EXPECT_LT(l->props.mass, 0);
+    // The centre of mass is still that of the solid; the inertia comes out negated.
+    EXPECT_LT(l->props.inertia_com[0][0], 0);
+    expect_exact(*l);
+  }
+  // The torus is symmetric about the origin: its centre of mass is there.
+  EXPECT_NEAR(length(own.props.center_of_mass), 0, 1e-12);
 }
 
 TEST(MassRealMeshes, BunnyStlAndObjAgree) {
@@ -96,7 +146,7 @@ TEST(MassRealMeshes, BinaryPlyUnitCube) {
 }
 
 TEST(MassRealMeshes, InwardMeshesReportNegativeVolume) {
-  REQUIRE_REAL_MESHES("geomview/mushroom.off");
+  EXTRA_WITH_REAL_MESHES("geomview/mushroom.off");
   for (const char* name : {"geomview/mushroom.off", "octave-matgeom/dodecahedron.ply"}) {
     SCOPED_TRACE(name);
     const Loaded l = load(name);

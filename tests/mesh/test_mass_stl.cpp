@@ -96,8 +96,35 @@ TEST(MassStl, FarFromOriginFloat32Warns) {
   EXPECT_DOUBLE_EQ(p.center_of_mass.x, 1e4 + 0.5);
 }
 
+TEST(MassStl, OwnCornerTetrahedronHasVolumeOne) {
+  // Our own binary STL of the tetrahedron (0,0,0), (3,0,0), (0,2,0), (0,0,1), integer coordinates,
+  // exact in float32.
+  const std::vector<char> bytes =
+      binary_stl_bytes(tetrahedron_mesh({0, 0, 0}, {3, 0, 0}, {0, 2, 0}, {0, 0, 1}));
+  const TempFile file(".stl", {bytes.data(), bytes.size()});
+  const MappedFile mapped = MappedFile::open(file.path());
+  const auto view = binary_stl_view(mapped.bytes(), file.path());
+  ASSERT_TRUE(view);
+  const MassProperties p = binary_stl_mass_properties(*view, file.path());
+  // V = abc/6 = 1, c = (a/4, b/4, c/4) = (3/4, 1/2, 1/4); about the origin ∫x² = a³bc/60 = 27·2/60,
+  // ∫xy = a²b²c/120 = 36/120, and the others alike (a, b, c = 3, 2, 1).
+  EXPECT_DOUBLE_EQ(p.volume, 1);
+  EXPECT_DOUBLE_EQ(p.center_of_mass.x, 0.75);
+  EXPECT_DOUBLE_EQ(p.center_of_mass.y, 0.5);
+  EXPECT_DOUBLE_EQ(p.center_of_mass.z, 0.25);
+  const double xx = 27.0 * 2 / 60, yy = 3 * 8.0 / 60, zz = 3 * 2.0 / 60;
+  const double xy = 9 * 4.0 / 120, yz = 3 * 4.0 / 120, zx = 9 * 2.0 / 120;
+  EXPECT_NEAR(p.inertia_origin[0][0], yy + zz, 1e-15);
+  EXPECT_NEAR(p.inertia_origin[1][1], xx + zz, 1e-15);
+  EXPECT_NEAR(p.inertia_origin[2][2], xx + yy, 1e-15);
+  EXPECT_NEAR(p.inertia_origin[0][1], -xy, 1e-15);
+  EXPECT_NEAR(p.inertia_origin[1][2], -yz, 1e-15);
+  EXPECT_NEAR(p.inertia_origin[0][2], -zx, 1e-15);
+}
+
 TEST(MassStl, IrregularTetrahedronHasVolumeOne) {
-  REQUIRE_REAL_MESHES("stl-models/tetrahedronIrregular.bin.stl");
+  // Extra: the same tetrahedron in the stl-models file (no licence stated, not bundled).
+  EXTRA_WITH_REAL_MESHES("stl-models/tetrahedronIrregular.bin.stl");
   const std::string dir = shared_meshes_dir();
   const MappedFile file = MappedFile::open(dir + "/stl-models/tetrahedronIrregular.bin.stl");
   const auto view = binary_stl_view(file.bytes(), "tetrahedronIrregular.bin.stl");

@@ -66,10 +66,11 @@ void expect_same_mesh_weld(const Mesh& mesh, double tolerance) {
   const WeldResult moved = weld(std::move(copy), tolerance);
   EXPECT_TRUE(copy.vertices.empty() && copy.corners.empty());
   ASSERT_EQ(moved.mesh.vertices.size(), kept.mesh.vertices.size());
-  if (!kept.mesh.vertices.empty())  // memcmp of an empty vector's null data() is undefined
+  if (!kept.mesh.vertices.empty()) {  // memcmp of an empty vector's null data() is undefined
     EXPECT_EQ(std::memcmp(moved.mesh.vertices.data(), kept.mesh.vertices.data(),
                           kept.mesh.vertices.size() * sizeof(Vec3d)),
               0);
+  }
   EXPECT_EQ(moved.mesh.corners, kept.mesh.corners);
   EXPECT_EQ(moved.mesh.face_offsets, kept.mesh.face_offsets);
   EXPECT_EQ(moved.map.to_welded, kept.map.to_welded);

@@ -109,4 +109,14 @@ inline bool has_real_mesh(const std::string& relative) {
     if (!::pgamesh::test::has_real_mesh(required_mesh)) \
   GTEST_SKIP() << required_mesh << " is not bundled (its licence): it comes with ../shared/meshes"
 
+// For an extra test of one third-party file that is not bundled (its licence): skipped, and said
+// so, unless every named real mesh is there. The property it checks is covered on a lone clone by a
+// test of a mesh of our own, which never skips.
+#define EXTRA_WITH_REAL_MESHES(...)                                                           \
+  for (const char* extra_mesh : {__VA_ARGS__})                                                \
+    if (!::pgamesh::test::has_real_mesh(extra_mesh))                                          \
+  GTEST_SKIP() << "extra test of " << extra_mesh                                              \
+               << " (not bundled, comes with ../shared/meshes); its property is tested on a " \
+                  "mesh of our own"
+
 namespace pgamesh::test {}  // namespace pgamesh::test

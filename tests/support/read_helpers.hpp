@@ -86,6 +86,16 @@ inline std::string shared_mesh(const std::string& relative) {
   const std::string var = ::pgamesh::test::shared_mesh(relative); \
   if (var.empty()) GTEST_SKIP() << "shared mesh " << (relative) << " is absent"
 
+// For an extra test of one third-party file that is not bundled (its licence): the path, or the
+// test is skipped, and says so, when the file is absent. A test of our own input covers its
+// property on a lone clone and never skips.
+#define SHARED_MESH_EXTRA(var, relative)                                                      \
+  const std::string var = ::pgamesh::test::shared_mesh(relative);                             \
+  if (var.empty())                                                                            \
+  GTEST_SKIP() << "extra test of " << (relative)                                              \
+               << " (not bundled, comes with ../shared/meshes); its property is tested on a " \
+                  "mesh of our own"
+
 // Six times the signed volume: Σ det(v0, vi, vi+1) over the fan of every face (o ∨ F,
 // docs/conventions.md §5).
 inline double six_volume(const Mesh& m) {

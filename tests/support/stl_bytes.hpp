@@ -1,8 +1,9 @@
-// Binary STL bytes of a triangle mesh built in memory (float32 coordinates, normals left zero),
-// for tests of the streamed STL path.
+// Binary STL bytes (float32 coordinates, normals left zero) and ASCII STL text of a mesh built in
+// memory, for tests of the STL readers and the streamed STL path.
 #pragma once
 
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -38,6 +39,26 @@ inline std::vector<char> binary_stl_bytes(const Mesh& m) {
     }
   }
   return out;
+}
+
+// The ASCII STL of the mesh's faces, fanned as binary_stl_bytes does, each coordinate printed
+// with 7 significant digits (%.6e), as many exporters write them.
+inline std::string ascii_stl_text(const Mesh& m) {
+  std::string out = "solid test\n";
+  char line[128];
+  for (std::size_t f = 0; f < m.face_count(); ++f) {
+    const std::uint32_t* c = m.face(f);
+    for (std::size_t k = 1; k + 1 < m.face_size(f); ++k) {
+      out += "facet normal 0 0 0\nouter loop\n";
+      for (const std::uint32_t idx : {c[0], c[k], c[k + 1]}) {
+        const Vec3d& v = m.vertices[idx];
+        std::snprintf(line, sizeof line, "vertex %.6e %.6e %.6e\n", v.x, v.y, v.z);
+        out += line;
+      }
+      out += "endloop\nendfacet\n";
+    }
+  }
+  return out + "endsolid test\n";
 }
 
 }  // namespace pgamesh::test
