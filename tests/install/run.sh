@@ -56,9 +56,10 @@ serves_page() {
   done
   [ -n "$url" ] || { cat "$work/serve.err"; return 1; }
   if grep -q "missing" "$work/serve.err"; then cat "$work/serve.err"; return 1; fi
-  curl -sf "$url" | grep -q "<html" &&
-    curl -sf "${url}vendor/three/three.module.js" > /dev/null &&
-    curl -sf "${url}api/meshes" | grep -q "bunny"
+  # Saved, then searched: `curl | grep -q` fails under pipefail when grep stops reading first.
+  curl -sf "$url" -o "$work/page.html" && grep -q "<html" "$work/page.html" &&
+    curl -sf "${url}vendor/three/three.module.js" -o /dev/null &&
+    curl -sf "${url}api/meshes" -o "$work/meshes.json" && grep -q "bunny" "$work/meshes.json"
 }
 check "the installed server serves its page, three.js and bundled meshes from another folder" serves_page
 
