@@ -132,7 +132,7 @@ Vec3d cga_vector_arg(const CallArgs& c, std::size_t i, std::string_view what) {
       c.fail_at(i, std::string(c.name) + ": " + std::string(what) +
                        " must be a Euclidean vector x*e1 + y*e2 + z*e3");
   const Vec3d v{c[i][cga::e1_mask], c[i][cga::e2_mask], c[i][cga::e3_mask]};
-  if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
+  if (!is_finite(v))
     c.fail_at(i, std::string(c.name) + ": " + std::string(what) + " is not finite");
   return v;
 }

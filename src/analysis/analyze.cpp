@@ -24,10 +24,6 @@ namespace pgamesh {
 
 namespace {
 
-bool all_finite(Vec3d v) {
-  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
-
 bool all_finite(const Mat3& m) {
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j)
@@ -41,11 +37,10 @@ bool all_finite(const Mat3& m) {
 // the inertia are undefined (nan) when the volume is 0, so they are judged only when it is not.
 void refuse_overflow(const Analysis& r) {
   const MassProperties& m = r.mass;
-  const bool finite =
-      std::isfinite(m.area) && std::isfinite(m.volume) && std::isfinite(m.mass) &&
-      std::isfinite(m.gap_area) &&
-      (m.volume == 0 ||
-       (all_finite(m.center_of_mass) && all_finite(m.inertia_com) && all_finite(m.inertia_origin)));
+  const bool finite = std::isfinite(m.area) && std::isfinite(m.volume) && std::isfinite(m.mass) &&
+                      std::isfinite(m.gap_area) &&
+                      (m.volume == 0 || (is_finite(m.center_of_mass) && all_finite(m.inertia_com) &&
+                                         all_finite(m.inertia_origin)));
   if (!finite)
     throw std::range_error(
         "the coordinates are too large for double precision: the area, volume or inertia "

@@ -20,8 +20,7 @@ Vec3d up_from_attitude(Vec3d level_up, double pitch, double roll) {
 }
 
 Vec3d up_from_gravity(Vec3d g) {
-  if (!std::isfinite(g.x) || !std::isfinite(g.y) || !std::isfinite(g.z))
-    throw std::invalid_argument("the acceleration must be finite");
+  if (!is_finite(g)) throw std::invalid_argument("the acceleration must be finite");
   if (dot(g, g) == 0) throw std::invalid_argument("the apparent gravity must not be zero");
   return unit_up(-g);
 }

@@ -19,8 +19,7 @@ Tank make_tank(const Mesh& mesh) {
   t.lower = {inf, inf, inf};
   t.upper = {-inf, -inf, -inf};
   for (const Vec3d& v : t.vertices) {
-    if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
-      throw std::invalid_argument("the mesh has a non-finite vertex coordinate");
+    if (!is_finite(v)) throw std::invalid_argument("the mesh has a non-finite vertex coordinate");
     for (int i = 0; i < 3; ++i) {
       t.lower[i] = std::min(t.lower[i], v[i]);
       t.upper[i] = std::max(t.upper[i], v[i]);

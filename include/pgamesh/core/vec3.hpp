@@ -46,4 +46,9 @@ T length(Vec3<T> a) {
   return std::sqrt(dot(a, a));
 }
 
+// Whether no coordinate is infinite or NaN.
+inline bool is_finite(Vec3<double> a) {
+  return std::isfinite(a.x) && std::isfinite(a.y) && std::isfinite(a.z);
+}
+
 }  // namespace pgamesh

@@ -24,7 +24,7 @@ Box3 sampled_box(const BinaryStlView& view, const std::string& name, bool releas
     Vec3d v[3];
     stl_triangle(detail::record_block(view, i, 1, name), v);
     for (const Vec3d& p : v)
-      if (std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z)) box.add(p);
+      if (is_finite(p)) box.add(p);
   }
   return box;
 }
