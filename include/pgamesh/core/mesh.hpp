@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "pgamesh/core/units.hpp"
 #include "pgamesh/core/vec3.hpp"
 
 namespace pgamesh {
@@ -37,12 +38,23 @@ struct Mesh {
   }
 };
 
+// A named part of a file that holds several (a 3MF build item, a glTF node's mesh): its faces are
+// faces [first_face, first_face + face_count) of the mesh read, already placed by the file's
+// transforms.
+struct MeshPart {
+  std::string name;
+  std::uint32_t first_face = 0;
+  std::uint32_t face_count = 0;
+};
+
 // What a reader learned about the file besides the geometry.
 struct MeshSource {
   std::string path;
   MeshFormat format = MeshFormat::unknown;
-  bool single_precision = false;  // coordinates were float32 (binary STL, float PLY)
-  std::uint64_t groups = 0;       // OBJ g/o statements (ignored, counted)
+  bool single_precision = false;              // coordinates were float32 (binary STL, float PLY)
+  std::uint64_t groups = 0;                   // OBJ g/o statements (ignored, counted)
+  LengthUnit unit = LengthUnit::unspecified;  // the file's own unit, if it states one
+  std::vector<MeshPart> parts;                // empty for formats of one object
   std::vector<std::string> warnings;
 };
 
