@@ -14,6 +14,9 @@ struct WriteOptions {
   bool single_precision = false;
   // STL: the solid name (ASCII) / header text (binary, truncated to 80 bytes).
   std::string solid_name = "pgamesh";
+  // Formats that state a unit (3MF; glTF is metres by definition): the unit the coordinates are
+  // in. Coordinates are written as they are, never scaled.
+  LengthUnit unit = LengthUnit::unspecified;
 };
 
 // The bytes of `mesh` in `format` (stl_ascii, stl_binary, obj, ply_ascii, ply_binary_le,
