@@ -41,6 +41,7 @@ namespace pgamesh::cli {
 // ---- the commands, in the order of `pgamesh --help` ---------------------------------------------
 void add_props_command(CLI::App& app);    // cmd_props.cpp
 void add_check_command(CLI::App& app);    // cmd_check.cpp
+void add_repair_command(CLI::App& app);   // cmd_repair.cpp
 void add_fuel_command(CLI::App& app);     // cmd_fuel.cpp
 void add_cga_command(CLI::App& app);      // cmd_cga.cpp
 void add_quadric_command(CLI::App& app);  // cmd_quadric.cpp

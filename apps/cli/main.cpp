@@ -80,6 +80,7 @@ int main(int argc, char** argv) {
   // The commands, in the order of `pgamesh --help` (commands.hpp: how to add one).
   add_props_command(app);
   add_check_command(app);
+  add_repair_command(app);
   add_fuel_command(app);
   add_cga_command(app);
   add_quadric_command(app);
