@@ -1,6 +1,6 @@
 // `pgamesh check FILE [--json] [--weld-tolerance T] [--area-threshold R] [--max-list N]
-// [--fix-orientation [--output OUT]]`: the topology of a mesh (docs/topology.md). The report is the
-// result, so an open or broken mesh still exits 0; unreadable input exits 1 with the reader's
+// [--fix-orientation] [--output OUT]]`: the topology of a mesh (docs/topology.md). The report is
+// the result, so an open or broken mesh still exits 0; unreadable input exits 1 with the reader's
 // error.
 #include <algorithm>
 #include <cstdio>
@@ -18,6 +18,7 @@
 #include "pgamesh/io/write_mesh.hpp"
 #include "pgamesh/mesh/topology/orientation.hpp"
 #include "pgamesh/mesh/topology/topology.hpp"
+#include "pgamesh/mesh/weld/weld.hpp"
 #include "text_append.hpp"
 
 namespace pgamesh::cli {
@@ -147,8 +148,6 @@ int run_check(const CheckOptions& o) {
   const std::string& path = o.path;
   const std::string& output = o.output;
   const bool fix = o.fix, json = o.json;
-  if (!output.empty() && !fix)
-    throw UsageError("--output writes the repaired mesh of --fix-orientation");
 
   try {
     MeshSource source;
@@ -188,7 +187,9 @@ int run_check(const CheckOptions& o) {
       out = readable_report(mesh, source, analysis, fix ? &repair : nullptr, options.list_cap);
       if (!output.empty()) append(out, "wrote %s\n", output.c_str());
     }
-    if (!output.empty()) write_mesh(mesh, output, output_format);
+    // What was analysed: the mesh welded as the report saw it (and reoriented by
+    // --fix-orientation).
+    if (!output.empty()) write_mesh(weld(mesh, options.weld_tolerance).mesh, output, output_format);
     std::fwrite(out.data(), 1, out.size(), stdout);
     return 0;
   } catch (const InputError& e) {
@@ -233,8 +234,9 @@ void add_check_command(CLI::App& app) {
                 "reverse faces to agree with their neighbours and turn closed\n"
                 "parts outward; reports the faces flipped, then the repaired mesh");
   sub->add_option("-o,--output", o->output,
-                  "with --fix-orientation: write the repaired mesh (format from\n"
-                  "OUT's extension: .stl .obj .ply .off)")
+                  "write the mesh as analysed: welded (within --weld-tolerance),\n"
+                  "and reoriented with --fix-orientation (format from OUT's\n"
+                  "extension: .stl .obj .ply .off)")
       ->type_name("OUT");
   add_format(*sub, o->forced);
   on_run(*sub, [o] { return run_check(*o); });

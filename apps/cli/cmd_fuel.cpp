@@ -23,6 +23,7 @@
 #include "pgamesh/io/mesh_format.hpp"
 #include "pgamesh/io/read_mesh.hpp"
 #include "pgamesh/mesh/topology/topology.hpp"
+#include "pgamesh/mesh/weld/weld.hpp"
 #include "pgamesh/tank/attitude.hpp"
 #include "pgamesh/tank/fuel_index.hpp"
 #include "pgamesh/tank/fuel_sweep.hpp"
@@ -46,6 +47,7 @@ struct Options {
   int table = 0;
   std::vector<double> volumes;
   std::optional<double> density, mass;
+  double weld_tolerance = 0;  // > 0: the tank is the mesh welded within it
   bool json = false, csv = false, force = false;
 };
 
@@ -123,14 +125,24 @@ struct TankCheck {
   std::vector<std::string> problems;  // why unfit (tank::TankFitness::problems)
 };
 
+// The mesh as gauged: as read, or welded within --weld-tolerance (a CAD export closed only up to
+// its rounding), with what the weld did.
+struct GaugedMesh {
+  Mesh mesh;
+  WeldMap weld;
+};
+
 // The tank's fields of the document: the same names as `pgamesh props` and `pgamesh check` for the
 // same things (docs/json.md).
-void write_header(Json& w, const Options& o, const Analysis& analysis, const Mesh& mesh,
+void write_header(Json& w, const Options& o, const Analysis& analysis, const GaugedMesh& gauged,
                   const tank::Tank& t, const TankCheck& check, double density) {
   w["file"] = o.file;
   w["format"] = format_name(analysis.format);
   w["triangles"] = t.triangles.size();
-  w["faces"] = mesh.face_count();
+  w["faces"] = gauged.mesh.face_count();
+  w["weld"] = Json{{"tolerance", json_number(o.weld_tolerance)},
+                   {"merged", gauged.weld.merged},
+                   {"max_moved", json_number(gauged.weld.max_moved)}};
   w["tank_volume"] = json_number(t.volume);
   w["density"] = json_number(density);
   w["tank_mass"] = json_number(density * t.volume);
@@ -201,9 +213,17 @@ TankCheck check_tank(const Options& o, const Mesh& mesh, const tank::Tank& t) {
   return c;
 }
 
+GaugedMesh gauged_mesh(const Options& o, MeshSource& source) {
+  Mesh read = read_mesh(o.file, &source);
+  if (o.weld_tolerance == 0) return {std::move(read), {}};
+  WeldResult welded = weld(std::move(read), o.weld_tolerance);
+  return {std::move(welded.mesh), std::move(welded.map)};
+}
+
 int run(const Options& o) {
   MeshSource source;
-  const Mesh mesh = read_mesh(o.file, &source);
+  const GaugedMesh gauged = gauged_mesh(o, source);
+  const Mesh& mesh = gauged.mesh;
   // The front door's reading of the mesh, for what it says of every file (the reader's repairs,
   // float32 precision) and its refusal of coordinates whose figures overflow; the tank's fitness
   // is tank::tank_fitness's rule below.
@@ -233,7 +253,7 @@ int run(const Options& o) {
   std::string out;
   // The document: the tank's fields, then one attitude's (or "attitudes", one object each).
   Json doc;
-  write_header(doc, o, analysis, mesh, t, check, density);
+  write_header(doc, o, analysis, gauged, t, check, density);
   if (grid) doc["attitudes"] = Json::array();
   if (o.csv) {
     append(out,
@@ -243,10 +263,16 @@ int run(const Options& o) {
            "L^4; mass = density x volume in the unit of the density times L^3\n"
            "# density %.17g\n# tank_volume %.17g\n",
            o.file.c_str(), density, t.volume);
+    if (o.weld_tolerance > 0)
+      append(out, "# weld_tolerance %.17g merged %zu max_moved %.17g\n", o.weld_tolerance,
+             gauged.weld.merged, gauged.weld.max_moved);
     // A forced table says so inside the file, where it travels with the figures.
     for (const auto& problem : check.problems)
       append(out, "# warning: forced (--force), not a valid tank: %s\n", problem.c_str());
   }
+  if (!o.json && !o.csv && o.weld_tolerance > 0)
+    append(out, "%s: welded within %s: %zu vertices merged, moved at most %s\n", o.file.c_str(),
+           fmt(o.weld_tolerance).c_str(), gauged.weld.merged, fmt(gauged.weld.max_moved).c_str());
   const bool csv_attitude = o.attitude || grid;
   std::unique_ptr<tank::FuelIndex> index;
   for (std::size_t ai = 0; ai < atts.size(); ++ai) {
@@ -438,6 +464,12 @@ void add_fuel_command(CLI::App& app) {
                       "mass of the full tank instead; the density is M / tank volume")
       ->type_name("M")
       ->group(mass);
+  add_number(*sub, "--weld-tolerance", o.weld_tolerance,
+             "gauge the mesh welded within T: vertices closer than T merge\n"
+             "(a CAD export closed only up to rounding; default 0: as read)",
+             0.0)
+      ->type_name("T")
+      ->group(output);
   sub->add_flag("--json", o.json, "one JSON object on stdout")->group(output);
   sub->add_flag("--csv", o.csv, "CSV with a commented header (tables and volume lists)")
       ->group(output);

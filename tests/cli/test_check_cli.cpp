@@ -122,7 +122,7 @@ TEST(CheckCli, BadOptionsExitTwo) {
   const std::string& path = file.path();
   EXPECT_EQ(run_check("'" + path + "' --weld-tolerance -1").status, 2);
   EXPECT_EQ(run_check("'" + path + "' --weld-tolerance abc").status, 2);
-  EXPECT_EQ(run_check("'" + path + "' --output x.obj").status, 2);  // needs --fix-orientation
+  EXPECT_EQ(run_check("'" + path + "' --output x.unknown").status, 2);  // no format
   EXPECT_EQ(run_check("'" + path + "' --bogus").status, 2);
   EXPECT_EQ(run_check("").status, 2);
 }
@@ -141,6 +141,15 @@ TEST(CheckCli, WeldToleranceIsReported) {
   EXPECT_EQ(welded["components"], 1);
   EXPECT_EQ(welded["weld"]["merged_vertices"], 2);
   EXPECT_NEAR(welded["weld"]["max_moved"].get<double>(), 1e-9, 1e-15);
+
+  // --output writes what was analysed: the welded mesh, 4 vertices, the two faces kept.
+  const TempFile out("_seam_welded.obj", "");
+  ASSERT_EQ(run_check("'" + path + "' --weld-tolerance 1e-6 --output '" + out.path() + "'").status,
+            0);
+  const Mesh written = read_mesh(out.path());
+  EXPECT_EQ(written.vertices.size(), 4u);
+  EXPECT_EQ(written.face_count(), 2u);
+  EXPECT_EQ(analyze_topology(written).boundary_edges, 4u);
 }
 
 }  // namespace
