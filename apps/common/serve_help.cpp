@@ -17,6 +17,8 @@ void print_serve_help(std::FILE* out) {
                "                    another address needs --allow-remote\n"
                "  --allow-remote    accept a --host other machines can reach (no authentication)\n"
                "  --max-upload N    largest accepted upload in bytes, suffix K, M or G allowed\n"
+               "  --weld-tolerance T  analyse every mesh welded within T (an upload may give\n"
+               "                    its own: POST /api/upload?weld_tolerance=T)\n"
                "                    (default 64M)\n"
                "  --assets DIR      folder of the page (default: <prefix>/share/pgamesh/web when\n"
                "                    installed, else the source tree's apps/viewer/web)\n"

@@ -9,6 +9,7 @@
 #include <system_error>
 
 #include "local_hosts.hpp"
+#include "pgamesh/core/number_text.hpp"
 #include "serve_help.hpp"
 #include "server.hpp"
 
@@ -86,6 +87,14 @@ int main(int argc, char** argv) {
                      argv[i]);
         return 2;
       }
+    } else if (arg == "--weld-tolerance" && has_value) {
+      const auto t = pgamesh::parse_number(argv[++i]);
+      if (!t || *t < 0) {
+        std::fprintf(stderr, "pgamesh serve: --weld-tolerance wants a number >= 0, got '%s'\n",
+                     argv[i]);
+        return 2;
+      }
+      options.weld_tolerance = *t;
     } else if (arg == "--allow-remote") {
       options.allow_remote = true;
     } else if (arg == "--quiet") {

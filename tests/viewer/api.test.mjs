@@ -363,6 +363,30 @@ describe('fuel', () => {
     assert.equal(r2.status, 422);
     assert.match(r2.body.error, /inside out/);
   });
+
+  test('an upload closed only by a weld is gauged with weld_tolerance', async (t) => {
+    if (!features.fuel) return t.skip('this build serves no fuel');
+    // A unit cube whose face x = 1 has vertices of its own, 4e-9 off the others.
+    const seamCube = 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n' +
+      'v 1.000000004 0 0\nv 1.000000004 1 0\nv 1.000000004 1 1\nv 1.000000004 0 1\n' +
+      'f 1 4 3\nf 1 3 2\nf 5 6 7\nf 5 7 8\nf 1 2 6\nf 1 6 5\nf 4 8 7\nf 4 7 3\n' +
+      'f 1 5 8\nf 1 8 4\nf 9 10 11\nf 9 11 12\n';
+    const asRead = await (await upload(seamCube, 'seam.obj')).json();
+    assert.equal((await getJson(`/api/mesh/${asRead.id}/fuel?volume=0.5`)).status, 422);
+    const r = await fetch(new URL('/api/upload?name=seam.obj&weld_tolerance=1e-6', server.url),
+                          { method: 'POST', body: seamCube });
+    assert.equal(r.status, 201);
+    const welded = await r.json();
+    assert.equal(welded.weld_tolerance, 1e-6);
+    const props = await getJson(`/api/mesh/${welded.id}/props`);
+    assert.equal(props.body.closed, true);
+    const f = await getJson(`/api/mesh/${welded.id}/fuel?volume=0.5`);
+    assert.equal(f.status, 200);
+    assert.ok(near(f.body.level, 0.5, 1, 1e-12), `${f.body.level}`);
+    const bad = await fetch(new URL('/api/upload?name=s.obj&weld_tolerance=-1', server.url),
+                            { method: 'POST', body: seamCube });
+    assert.equal(bad.status, 400);
+  });
 });
 
 describe('limits and load', () => {

@@ -16,10 +16,11 @@ std::string make_id(char kind, std::uint64_t number) {
 }
 
 std::shared_ptr<const StoredMesh> parse(std::string id, const std::string& name,
-                                        std::span<const char> bytes) {
+                                        std::span<const char> bytes, double weld_tolerance) {
   auto stored = std::make_shared<StoredMesh>();
   stored->id = std::move(id);
   stored->name = name;
+  stored->weld_tolerance = weld_tolerance;
   stored->mesh = read_mesh_bytes(bytes, name, &stored->source);
   return stored;
 }
@@ -37,14 +38,15 @@ std::string MeshStore::add_file(const std::string& path, const std::string& name
 }
 
 std::shared_ptr<const StoredMesh> MeshStore::add_upload(const std::string& name,
-                                                        std::span<const char> bytes) {
+                                                        std::span<const char> bytes,
+                                                        std::optional<double> weld_tolerance) {
   std::uint64_t number;
   {
     std::lock_guard lock(mutex_);
     number = next_upload_++;
   }
   // Parse outside the lock: other requests go on while a big upload is read.
-  auto stored = parse(make_id('u', number), name, bytes);
+  auto stored = parse(make_id('u', number), name, bytes, weld_tolerance.value_or(weld_tolerance_));
   std::lock_guard lock(mutex_);
   uploads_.emplace(number, stored);
   while (uploads_.size() > max_uploads_) uploads_.erase(uploads_.begin());
@@ -70,6 +72,7 @@ std::shared_ptr<const StoredMesh> MeshStore::get(const std::string& id) {
     auto stored = std::make_shared<StoredMesh>();
     stored->id = f.entry.id;
     stored->name = f.entry.name;
+    stored->weld_tolerance = weld_tolerance_;
     stored->mesh = read_mesh(f.path, &stored->source);
     f.loaded = std::move(stored);
   }

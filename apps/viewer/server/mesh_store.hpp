@@ -7,6 +7,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -20,8 +21,9 @@ struct FuelModel;  // fuel_model.hpp
 struct StoredMesh {
   std::string id;    // "f0", "f1", ... for files, "u1", "u2", ... for uploads
   std::string name;  // what the page shows: the file name or the uploaded file's name
-  Mesh mesh;
+  Mesh mesh;         // as read; the analyses weld it within weld_tolerance
   MeshSource source;
+  double weld_tolerance = 0;  // `--weld-tolerance` of pgamesh serve, or the upload's own
   // Built on first use by fuel_model(), under cache_mutex.
   mutable std::mutex cache_mutex;
   mutable std::shared_ptr<const FuelModel> fuel;
@@ -35,16 +37,18 @@ struct FileEntry {
 
 class MeshStore {
  public:
-  /// A store keeping at most `max_uploads` uploaded meshes (the oldest is dropped first).
-  explicit MeshStore(std::size_t max_uploads) : max_uploads_(max_uploads) {}
+  /// A store keeping at most `max_uploads` uploaded meshes (the oldest is dropped first); the
+  /// meshes are analysed welded within `weld_tolerance` unless an upload names its own.
+  explicit MeshStore(std::size_t max_uploads, double weld_tolerance = 0)
+      : max_uploads_(max_uploads), weld_tolerance_(weld_tolerance) {}
 
   /// Registers a mesh file to be read when first asked for; returns its id.
   std::string add_file(const std::string& path, const std::string& name, const std::string& origin);
 
   /// Parses uploaded bytes (format detected from the content) and stores the mesh. Throws
   /// pgamesh::InputError naming `name` and the position when the bytes are not a readable mesh.
-  std::shared_ptr<const StoredMesh> add_upload(const std::string& name,
-                                               std::span<const char> bytes);
+  std::shared_ptr<const StoredMesh> add_upload(const std::string& name, std::span<const char> bytes,
+                                               std::optional<double> weld_tolerance = {});
 
   /// The mesh with this id, or nullptr when no such id is known (or the upload was evicted).
   /// Reads a registered file on first use; throws pgamesh::InputError when it is not readable.
@@ -61,6 +65,7 @@ class MeshStore {
   };
   mutable std::mutex mutex_;
   std::size_t max_uploads_;
+  double weld_tolerance_ = 0;
   std::vector<File> files_;
   std::map<std::uint64_t, std::shared_ptr<const StoredMesh>> uploads_;  // by upload number
   std::uint64_t next_upload_ = 1;

@@ -58,6 +58,7 @@ nlohmann::json mesh_summary_json(const StoredMesh& stored) {
       {"triangles", fan_triangle_count(m)},
       {"bounds", {{"min", {b.min.x, b.min.y, b.min.z}}, {"max", {b.max.x, b.max.y, b.max.z}}}},
       {"drawing_origin", {o.x, o.y, o.z}},
+      {"weld_tolerance", stored.weld_tolerance},
       {"warnings", stored.source.warnings},
   };
 }

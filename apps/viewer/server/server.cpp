@@ -195,6 +195,7 @@ void add_routes(httplib::Server& svr, const ServerOptions& options, const HostCh
               options.mass.density = density;
             }
             if (auto m = find_mesh(store, req.matches[1], res)) {
+              options.topology_options.weld_tolerance = m->weld_tolerance;
               try {
                 // The same report and JSON as `pgamesh props --json` (apps/cli/props_report.hpp).
                 send_raw_json(res, cli::props_json(analyze_mesh(m->mesh, m->source, options)));
@@ -214,6 +215,7 @@ void add_routes(httplib::Server& svr, const ServerOptions& options, const HostCh
             if (auto m = find_mesh(store, req.matches[1], res)) {
               TopologyOptions options;
               options.list_cap = kMaxBoundarySegments;
+              options.weld_tolerance = m->weld_tolerance;
               try {
                 send_raw_json(res, boundary_json(analyze_topology(m->mesh, options)));
               } catch (const std::exception& e) {
@@ -246,8 +248,15 @@ void add_routes(httplib::Server& svr, const ServerOptions& options, const HostCh
         break;
     }
     if (body.empty()) return send_error(res, 400, name + ": the upload is empty");
+    std::optional<double> weld_tolerance;
+    if (req.has_param("weld_tolerance")) {
+      double t = 0;
+      if (!parse_number(req.get_param_value("weld_tolerance"), t) || !(t >= 0))
+        return send_error(res, 400, "weld_tolerance must be a finite number >= 0");
+      weld_tolerance = t;
+    }
     try {
-      const auto m = store.add_upload(name, {body.data(), body.size()});
+      const auto m = store.add_upload(name, {body.data(), body.size()}, weld_tolerance);
       send_json(res, 201, mesh_summary_json(*m));
     } catch (const InputError& e) {
       send_error(res, 400, e.what());
@@ -292,7 +301,7 @@ int run_server(const ServerOptions& options) {
     std::fprintf(stderr, "pgamesh serve: warning: %s is missing (run scripts/setup.sh)\n",
                  m.c_str());
 
-  MeshStore store(options.max_kept_uploads);
+  MeshStore store(options.max_kept_uploads, options.weld_tolerance);
   // Files named on the command line are read now: a mistake there is reported before serving.
   for (const std::string& f : options.files) {
     try {

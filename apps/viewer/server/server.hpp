@@ -14,10 +14,11 @@ struct ServerOptions {
   int port = 8080;                 // 0: any free port (the URL printed says which)
   std::size_t max_upload = std::size_t{64} << 20;  // bytes; bigger request bodies get 413
   std::size_t max_kept_uploads = 8;                // uploads kept in memory, oldest dropped first
-  std::string web_dir;                             // folder of index.html and node_modules/three
-  std::string bundled_dir;                         // folder of the bundled meshes (data/meshes)
-  std::vector<std::string> files;                  // meshes named on the command line
-  bool log_requests = true;                        // one line per request on stderr
+  double weld_tolerance = 0;  // meshes are analysed welded within it (an upload may name its own)
+  std::string web_dir;        // folder of index.html and node_modules/three
+  std::string bundled_dir;    // folder of the bundled meshes (data/meshes)
+  std::vector<std::string> files;  // meshes named on the command line
+  bool log_requests = true;        // one line per request on stderr
 };
 
 /// Serves until SIGINT or SIGTERM. Prints "pgamesh serve: listening on http://HOST:PORT/" on stdout
