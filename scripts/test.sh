@@ -32,8 +32,15 @@ stage "installed package (find_package, the README example, the installed viewer
 tests/install/run.sh build/release
 
 if [ -x build/release/pgamesh-serve ]; then
-  stage "browser tests (pgamesh serve: API over loopback, the page in headless chromium)"
-  PGAMESH_CLI=build/release/pgamesh timeout --kill-after=10 300 node --test tests/viewer/
+  # The installed copy, started from a folder outside the clone: the page, three.js and the
+  # bundled meshes must come from the prefix.
+  stage "browser tests (installed pgamesh serve: API over loopback, limits, load, the page in headless chromium)"
+  rm -rf build/installed
+  cmake --install build/release --prefix build/installed > /dev/null
+  elsewhere=$(mktemp -d)
+  PGAMESH_CLI="$PWD/build/installed/bin/pgamesh" PGAMESH_SERVE_CWD="$elsewhere" \
+    timeout --kill-after=10 300 node --test tests/viewer/
+  rm -rf "$elsewhere"
 fi
 
 stage "AddressSanitizer + UndefinedBehaviorSanitizer build (library, CLI, tests, fuzz harnesses)"

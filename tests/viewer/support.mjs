@@ -7,6 +7,7 @@ import { dirname, join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
 
 export const repoRoot = resolve(dirname(fileURLToPath(import.meta.url)), '..', '..');
+// PGAMESH_CLI: the pgamesh to test — scripts/test.sh gives the installed one.
 export const cliPath = process.env.PGAMESH_CLI || join(repoRoot, 'build', 'release', 'pgamesh');
 export const tankPath = join(repoRoot, 'data', 'meshes', 'tank.obj');
 export const artifactsDir = join(repoRoot, 'test-artifacts', 'viewer');
@@ -19,8 +20,11 @@ process.on('exit', () => { for (const child of running) child.kill('SIGKILL'); }
 // once it printed its URL. Rejects when it exits first or prints no URL within 10 s.
 export function startServer(args = []) {
   return new Promise((resolvePromise, reject) => {
+    // PGAMESH_SERVE_CWD: start it elsewhere than the clone (the installed server must find its
+    // page relative to its executable, not the working directory).
     const child = spawn(cliPath, ['serve', '--port', '0', ...args],
-                        { stdio: ['ignore', 'pipe', 'pipe'] });
+                        { stdio: ['ignore', 'pipe', 'pipe'],
+                          cwd: process.env.PGAMESH_SERVE_CWD || undefined });
     running.add(child);
     child.once('exit', () => running.delete(child));
     let out = '', err = '';
