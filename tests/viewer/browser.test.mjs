@@ -2,7 +2,7 @@
 // meshes opened from the bundled list, the file picker and drag and drop; figures checked against
 // the file and the library; bad uploads shown as messages. Screenshots go to test-artifacts/viewer.
 import assert from 'node:assert/strict';
-import { mkdirSync } from 'node:fs';
+import { mkdirSync, writeFileSync } from 'node:fs';
 import { createRequire } from 'node:module';
 import { join } from 'node:path';
 import { after, before, describe, test } from 'node:test';
@@ -318,6 +318,53 @@ describe('viewer page', () => {
     } finally {
       await page.close();
       await small.stop();
+    }
+  });
+  test('what check finds is highlighted and listed; Repair closes the mesh', async () => {
+    // The unit cube without its top, one bottom triangle flipped: 4 boundary edges (one hole)
+    // and inconsistently oriented edges.
+    const broken = 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nv 0 0 1\nv 1 0 1\nv 0 1 1\nv 1 1 1\n' +
+      'f 1 3 4\nf 1 2 4\nf 1 2 6\nf 1 6 5\nf 3 7 8\nf 3 8 4\nf 1 5 7\nf 1 7 3\nf 2 4 8\n' +
+      'f 2 8 6\n';
+    const { page, problems } = await openPage(server.url);
+    try {
+      await selectFile(page, 'broken.obj', broken);
+      await page.waitForFunction(() => document.getElementById('mesh-name').textContent ===
+        'broken.obj' && document.body.dataset.state === 'ready');
+      await page.waitForSelector('#defects:not([hidden])');
+      const counts = JSON.parse(await page.getAttribute('#defects-list', 'data-counts'));
+      const file = join(artifactsDir, 'broken.obj');
+      writeFileSync(file, broken);
+      const cli = await runCli(['check', file, '--json']);
+      assert.equal(cli.code, 0, cli.stderr);
+      const c = JSON.parse(cli.stdout);
+      assert.equal(counts.boundary_edges, c.boundary_edges);
+      assert.equal(counts.inconsistent_edges, c.inconsistent_edges);
+      assert.ok(counts.boundary_edges > 0 && counts.inconsistent_edges > 0);
+      const list = await page.textContent('#defects-list');
+      assert.match(list, new RegExp(`${c.boundary_edges} boundary edges in 1 hole`));
+      assert.match(list, /inconsistently oriented edge/);
+      const layers = await page.evaluate(() => {
+        const g = window.pgameshViewer.view.groups;
+        return { boundary: !!g.boundary, inconsistent: !!g.inconsistent,
+                 nonmanifold: !!g.nonmanifold };
+      });
+      assert.deepEqual(layers, { boundary: true, inconsistent: true, nonmanifold: false });
+      await shot(page, 'defects');
+
+      await page.click('#repair-button');
+      await page.waitForFunction(() => document.getElementById('mesh-name').textContent ===
+        'broken.obj (repaired)' && document.body.dataset.state === 'ready');
+      await page.waitForFunction(() => document.getElementById('props-closed').dataset.value);
+      assert.equal(await figure(page, 'props-closed'), true);
+      assert.ok(near(await figure(page, 'props-volume'), 1, 1, 1e-15));
+      assert.match(await page.textContent('#message'), /1 of 1 hole capped; the result is a solid/);
+      assert.equal(await page.isHidden('#defects'), true);
+      await shot(page, 'repaired');
+      // The fuel panel's query on the broken mesh is refused (422, shown in its status line).
+      assert.deepEqual(problems.filter((p) => !/status of 422/.test(p)), []);
+    } finally {
+      await page.close();
     }
   });
 });

@@ -4,13 +4,22 @@
 
 namespace pgamesh::viewer {
 
+namespace {
+
+cli::Json segments(const std::vector<EdgeLocation>& edges) {
+  using cli::Json;
+  Json out = Json::array();
+  for (const EdgeLocation& e : edges)
+    out.push_back(Json::array({cli::json_number(e.p0.x), cli::json_number(e.p0.y),
+                               cli::json_number(e.p0.z), cli::json_number(e.p1.x),
+                               cli::json_number(e.p1.y), cli::json_number(e.p1.z)}));
+  return out;
+}
+
+}  // namespace
+
 std::string boundary_json(const TopologyReport& t) {
   using cli::Json;
-  Json segments = Json::array();
-  for (const EdgeLocation& e : t.boundary_edge_list)
-    segments.push_back(Json::array({cli::json_number(e.p0.x), cli::json_number(e.p0.y),
-                                    cli::json_number(e.p0.z), cli::json_number(e.p1.x),
-                                    cli::json_number(e.p1.y), cli::json_number(e.p1.z)}));
   Json loops = Json::array();
   for (const BoundaryLoop& l : t.boundary_loops)
     loops.push_back(Json{{"area", cli::json_number(l.area)},
@@ -18,9 +27,20 @@ std::string boundary_json(const TopologyReport& t) {
                          {"vector_area", cli::json_vec3(l.vector_area)}});
   Json w;
   w["boundary_edges"] = t.boundary_edges;
-  w["segments"] = std::move(segments);
+  w["segments"] = segments(t.boundary_edge_list);
   w["loops"] = std::move(loops);
   w["gap_area"] = cli::json_number(t.gap_area);
+  w["nonmanifold_edges"] = t.nonmanifold_edges;
+  w["nonmanifold_segments"] = segments(t.nonmanifold_edge_list);
+  w["inconsistent_edges"] = t.inconsistent_edges;
+  w["inconsistent_segments"] = segments(t.inconsistent_edge_list);
+  w["duplicated_faces"] = t.duplicated_faces;
+  w["zero_area_faces"] = t.zero_area_faces;
+  w["components"] = t.components;
+  w["closed_components"] = t.closed_components;
+  w["cavity_components"] = t.cavity_components;
+  w["inward_components"] = t.inward_components;
+  w["notes"] = cli::json_strings(t.notes);
   return cli::json_text(w);
 }
 

@@ -1,5 +1,6 @@
-// The boundary of an open mesh as the viewer draws it: its edges as segments and its holes'
-// loops, from the topology report (mesh/topology.hpp).
+// What `pgamesh check` finds, as the viewer draws and lists it: boundary, non-manifold and
+// inconsistently oriented edges as segments, the holes' loops, and the defects' counts, from the
+// topology report (mesh/topology.hpp).
 #pragma once
 
 #include <string>
@@ -9,7 +10,9 @@
 namespace pgamesh::viewer {
 
 /// {boundary_edges, segments: [[x0,y0,z0,x1,y1,z1], ...] (at most the report's list cap),
-/// loops: [{area, perimeter, vector_area}], gap_area} for drawing the holes of an open mesh.
+/// loops: [{area, perimeter, vector_area}], gap_area, nonmanifold_edges, nonmanifold_segments,
+/// inconsistent_edges, inconsistent_segments, duplicated_faces, zero_area_faces, components,
+/// closed_components, cavity_components, inward_components, notes}.
 std::string boundary_json(const TopologyReport& topology);
 
 }  // namespace pgamesh::viewer

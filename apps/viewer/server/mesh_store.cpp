@@ -53,6 +53,21 @@ std::shared_ptr<const StoredMesh> MeshStore::add_upload(const std::string& name,
   return stored;
 }
 
+std::shared_ptr<const StoredMesh> MeshStore::add_mesh(const std::string& name, Mesh mesh,
+                                                      MeshSource source, double weld_tolerance) {
+  auto stored = std::make_shared<StoredMesh>();
+  stored->name = name;
+  stored->mesh = std::move(mesh);
+  stored->source = std::move(source);
+  stored->weld_tolerance = weld_tolerance;
+  std::lock_guard lock(mutex_);
+  const std::uint64_t number = next_upload_++;
+  stored->id = make_id('u', number);
+  uploads_.emplace(number, stored);
+  while (uploads_.size() > max_uploads_) uploads_.erase(uploads_.begin());
+  return stored;
+}
+
 std::shared_ptr<const StoredMesh> MeshStore::get(const std::string& id) {
   if (id.size() < 2) return nullptr;
   std::uint64_t number = 0;

@@ -50,6 +50,10 @@ class MeshStore {
   std::shared_ptr<const StoredMesh> add_upload(const std::string& name, std::span<const char> bytes,
                                                std::optional<double> weld_tolerance = {});
 
+  /// Stores a mesh made here (the Repair action's result) as an upload; returns it.
+  std::shared_ptr<const StoredMesh> add_mesh(const std::string& name, Mesh mesh, MeshSource source,
+                                             double weld_tolerance);
+
   /// The mesh with this id, or nullptr when no such id is known (or the upload was evicted).
   /// Reads a registered file on first use; throws pgamesh::InputError when it is not readable.
   std::shared_ptr<const StoredMesh> get(const std::string& id);

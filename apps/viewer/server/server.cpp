@@ -29,8 +29,10 @@
 #include "pgamesh/core/input_error.hpp"
 #include "pgamesh/io/mesh_format.hpp"
 #include "pgamesh/mesh/mass/mass_properties.hpp"
+#include "pgamesh/mesh/repair/repair.hpp"
 #include "pgamesh/mesh/topology/topology.hpp"
 #include "props_report.hpp"
+#include "repair_json.hpp"
 #include "responses.hpp"
 
 namespace pgamesh::viewer {
@@ -53,13 +55,14 @@ constexpr std::size_t kMaxBoundarySegments = 100000;
 
 // What a path may be asked with: "GET" (HEAD included), "POST", or nothing (unknown path).
 const std::regex kMeshRoutes(
-    R"(/api/mesh/[fu][0-9]{1,18}(/geometry|/props|/boundary|/fuel|/fuel/table)?)");
+    R"(/api/mesh/[fu][0-9]{1,18}(/geometry|/props|/boundary|/check|/fuel|/fuel/table)?)");
+const std::regex kRepairRoute(R"(/api/mesh/[fu][0-9]{1,18}/repair)");
 
 std::string allowed_method(const AssetTable& assets, const std::string& path) {
   if (assets.by_url.count(path) || path == "/api/info" || path == "/api/meshes" ||
       std::regex_match(path, kMeshRoutes))
     return "GET";
-  if (path == "/api/upload") return "POST";
+  if (path == "/api/upload" || std::regex_match(path, kRepairRoute)) return "POST";
   return {};
 }
 
@@ -209,8 +212,10 @@ void add_routes(httplib::Server& svr, const ServerOptions& options, const HostCh
             }
           });
 
-  // The boundary edges to draw (at most kMaxBoundarySegments of them) and the holes' loops.
-  svr.Get(R"(/api/mesh/([fu][0-9]{1,18})/boundary)",
+  // What check finds, to draw and list: boundary, non-manifold and inconsistent edges (at most
+  // kMaxBoundarySegments of each), the holes' loops, the defects' counts. /boundary is its old
+  // name.
+  svr.Get(R"(/api/mesh/([fu][0-9]{1,18})/(boundary|check))",
           [&store](const httplib::Request& req, httplib::Response& res) {
             if (auto m = find_mesh(store, req.matches[1], res)) {
               TopologyOptions options;
@@ -223,6 +228,38 @@ void add_routes(httplib::Server& svr, const ServerOptions& options, const HostCh
               }
             }
           });
+
+  // The Repair action: `pgamesh repair` on the mesh (welded within its tolerance), the result
+  // stored as a new mesh; answers {mesh: its summary, repair: the report of repair --json}.
+  svr.Post(R"(/api/mesh/([fu][0-9]{1,18})/repair)", [&store](const httplib::Request& req,
+                                                             httplib::Response& res) {
+    RepairOptions options;
+    if (req.has_param("planarity")) {
+      double r = 0;
+      if (!parse_number(req.get_param_value("planarity"), r) || !(r >= 0))
+        return send_error(res, 400, "planarity must be a finite number >= 0");
+      options.hole.planarity = r;
+    }
+    options.hole.force = req.has_param("force") && req.get_param_value("force") == "1";
+    const auto m = find_mesh(store, req.matches[1], res);
+    if (!m) return;
+    try {
+      options.weld_tolerance = m->weld_tolerance;
+      Mesh mesh = m->mesh;
+      const RepairReport report = repair(mesh, options);
+      AnalysisOptions analysis_options;
+      analysis_options.topology_options.list_cap = 0;
+      const Analysis result = analyze_mesh(mesh, m->source, analysis_options);
+      const auto repaired = store.add_mesh(m->name + " (repaired)", std::move(mesh), m->source, 0);
+      send_raw_json(res, "{\"mesh\":" + mesh_summary_json(*repaired).dump() + ",\"repair\":" +
+                             cli::json_text(cli::repair_fields(m->source, report, result,
+                                                               options.list_cap, repaired->id)) +
+                             "}");
+      res.status = 201;
+    } catch (const std::exception& e) {
+      send_error(res, 422, m->name + ": " + e.what());
+    }
+  });
 
   add_fuel_routes(svr, store);
 

@@ -55,9 +55,16 @@ export async function getProps(id, density) {
   return parse(await fetch(`/api/mesh/${encodeURIComponent(id)}/props?${query({ density })}`));
 }
 
-// The boundary edges of an open mesh as segments [[ax, ay, az, bx, by, bz], ...] (capped).
-export async function getBoundary(id) {
-  return parse(await fetch(`/api/mesh/${encodeURIComponent(id)}/boundary`));
+// What check finds: boundary, non-manifold and inconsistent edges as segments
+// [[ax, ay, az, bx, by, bz], ...] (capped), the defects' counts and the notes.
+export async function getCheck(id) {
+  return parse(await fetch(`/api/mesh/${encodeURIComponent(id)}/check`));
+}
+
+// Runs pgamesh repair on the mesh; resolves to {mesh: the repaired mesh's summary, repair: the
+// report of pgamesh repair --json}.
+export async function repair(id) {
+  return parse(await fetch(`/api/mesh/${encodeURIComponent(id)}/repair`, { method: 'POST' }));
 }
 
 // The fuel (pgamesh fuel --json) for an attitude and either {level} or {volume}.

@@ -16,7 +16,11 @@ function panelStatus(id) {
     el.classList.toggle('problem', !!text);
   };
 }
-const props = new PropsPanel(state, panelStatus('props-status'));
+const props = new PropsPanel(state, panelStatus('props-status'), async (summary, text) => {
+  document.getElementById('mesh-select').value = '';
+  await openMesh(async () => summary);
+  showMessage(text, 'info');
+});
 const fuel = new FuelPanel(state, panelStatus('fuel-status'));
 
 function setState(s) {

@@ -1,18 +1,27 @@
 // The mass-properties panel: figures from the library (the same JSON as `pgamesh props --json`),
-// the centre of mass as a marker, the principal axes as arrows, and the boundary edges of an open
-// mesh highlighted.
+// the centre of mass as a marker, the principal axes as arrows (the principal frame's gizmo), and
+// what `pgamesh check` finds — boundary, non-manifold and inconsistently oriented edges —
+// highlighted and listed, with a Repair action (`pgamesh repair`).
 import * as api from './api.js';
 import { setFigure } from './panels.js';
 
 const AXIS_COLORS = [0xe4572e, 0x29bf12, 0x2e86de];  // moments ascending: smallest red
+const EDGE_COLORS = { boundary: 0xff00aa, nonmanifold: 0xff8c00, inconsistent: 0x0a9396 };
+
+function plural(n, word) {
+  return `${n} ${word}${n === 1 ? '' : 's'}`;
+}
 
 export class PropsPanel {
-  constructor(state, onStatus) {
+  // onRepaired(summary, report): the Repair action made a new mesh, to be opened.
+  constructor(state, onStatus, onRepaired) {
     this.state = state;
     this.onStatus = onStatus;
+    this.onRepaired = onRepaired;
     this.seq = 0;
     this.input = document.getElementById('density');
     this.input.addEventListener('change', () => this.update());
+    document.getElementById('repair-button').addEventListener('click', () => this.repair());
   }
 
   // Recomputes for the current mesh; resolves once the figures (or an error) are shown.
@@ -33,13 +42,81 @@ export class PropsPanel {
         ? `Not the figures of a solid: ${p.reasons.join('; ')}` : null);
       this.show(p);
       if (view) this.draw(p);
-      if (p.boundary_edges > 0 && this.state.info.features.check) {
-        const b = await api.getBoundary(mesh.id);
-        if (seq === this.seq && view) view.setLayer('boundary', view.segments(
-          b.segments.map((s) => [s.slice(0, 3), s.slice(3, 6)]), 0xff00aa));
+      document.getElementById('defects').hidden = true;
+      if (this.state.info.features.check) {
+        const c = await api.getCheck(mesh.id);
+        if (seq !== this.seq) return;
+        this.showDefects(c, p);
+        if (view)
+          for (const [kind, key] of [['boundary', 'segments'], ['nonmanifold', 'nonmanifold_segments'],
+                                     ['inconsistent', 'inconsistent_segments']])
+            view.setLayer(kind, c[key].length ? view.segments(
+              c[key].map((s) => [s.slice(0, 3), s.slice(3, 6)]), EDGE_COLORS[kind]) : null);
       }
     } catch (e) {
       if (seq === this.seq) this.onStatus(e.message);
+    }
+  }
+
+  // The defects' counts, each with its colour in the view; the Repair button when there is
+  // something to repair.
+  showDefects(c, p) {
+    const items = [];
+    const add = (n, text, key) => {
+      if (n > 0) items.push({ text, key });
+    };
+    add(c.boundary_edges, `${plural(c.boundary_edges, 'boundary edge')} in ` +
+        `${plural(c.loops.length, 'hole')}, gap area ${c.gap_area.toPrecision(6)}`, 'boundary');
+    add(c.nonmanifold_edges, plural(c.nonmanifold_edges, 'non-manifold edge'), 'nonmanifold');
+    add(c.inconsistent_edges, `${plural(c.inconsistent_edges, 'inconsistently oriented edge')} ` +
+        '(flipped faces)', 'inconsistent');
+    add(c.inward_components, `${plural(c.inward_components, 'closed part')} facing inward`);
+    add(c.duplicated_faces, plural(c.duplicated_faces, 'duplicated face'));
+    add(c.zero_area_faces, plural(c.zero_area_faces, 'zero-area face'));
+    if (c.cavity_components > 0)
+      items.push({ text: `${plural(c.cavity_components, 'cavity')} (inward by design)` });
+    const list = document.getElementById('defects-list');
+    list.replaceChildren(...items.map(({ text, key }) => {
+      const li = document.createElement('li');
+      if (key) {
+        const k = document.createElement('span');
+        k.className = `key ${key}`;
+        li.append(k, ' ');
+      }
+      li.append(text);
+      return li;
+    }));
+    list.dataset.counts = JSON.stringify({
+      boundary_edges: c.boundary_edges, nonmanifold_edges: c.nonmanifold_edges,
+      inconsistent_edges: c.inconsistent_edges, inward_components: c.inward_components,
+      duplicated_faces: c.duplicated_faces, zero_area_faces: c.zero_area_faces,
+    });
+    const repairable = p.volume_valid === false;
+    document.getElementById('repair-button').hidden = !repairable;
+    document.getElementById('defects').hidden = items.length === 0 && !repairable;
+  }
+
+  // Repairs the current mesh on the server and opens the result, with what changed.
+  async repair() {
+    const { mesh } = this.state;
+    if (!mesh) return;
+    const status = document.getElementById('repair-status');
+    status.textContent = 'Repairing…';
+    try {
+      const { mesh: repaired, repair: r } = await api.repair(mesh.id);
+      const removed = r.removed_faces.collapsed + r.removed_faces.duplicated +
+                      2 * r.removed_faces.double_wall_pairs;
+      const summary = `Repaired ${mesh.name}: ${plural(r.weld.merged, 'vertex')} merged, ` +
+        `${plural(removed, 'face')} removed, ${plural(r.reversed_faces.count, 'face')} reversed, ` +
+        `${r.holes.capped} of ${plural(r.holes.count, 'hole')} capped` +
+        (r.holes.refused ? ` (${r.holes.list.filter((h) => !h.capped)
+          .map((h) => h.refused).join('; ')})` : '') +
+        `; the result is ${r.result.volume_valid ? 'a solid' : 'not a solid: ' +
+          r.result.reasons.join('; ')}.`;
+      status.textContent = '';
+      await this.onRepaired(repaired, summary);
+    } catch (e) {
+      status.textContent = e.message;
     }
   }
 
@@ -70,7 +147,7 @@ export class PropsPanel {
 
   draw(p) {
     const view = this.state.view;
-    view.setLayer('boundary', null);
+    for (const kind of Object.keys(EDGE_COLORS)) view.setLayer(kind, null);
     const com = p.center_of_mass;
     if (!com) {  // null when undefined (docs/json.md)
       view.setLayer('com', null);
