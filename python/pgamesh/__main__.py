@@ -26,8 +26,8 @@ def parser() -> argparse.ArgumentParser:
     sub = p.add_subparsers(dest="command", required=True)
     b = sub.add_parser(
         "batch", help="analyse many mesh files as Dask tasks, one row per file",
-        description="Analyses every file (the figures of `pgamesh props --json`) as one Dask "
-                    "task and appends one row per file to --out (CSV, or JSON Lines for .jsonl). "
+        description="Analyses every file (the figures of `pgamesh props --json`) in Dask "
+                    "tasks and appends one row per file to --out (CSV, or JSON Lines for .jsonl). "
                     "Files already in --out (same path, size and mtime) are skipped; a failing "
                     "file records its error.")
     b.add_argument("paths", nargs="+", metavar="PATH_OR_GLOB",
@@ -44,6 +44,9 @@ def parser() -> argparse.ArgumentParser:
                    help="also a gauge table of N + 1 levels per file (closed meshes)")
     b.add_argument("--up", type=_vector, default=(0.0, 0.0, 1.0), metavar="X,Y,Z",
                    help="up vector of the fuel table (default 0,0,1)")
+    b.add_argument("--files-per-task", type=int, metavar="N",
+                   help="files analysed by one Dask task (default: 1 for a small batch, up to "
+                        "32 for a large one)")
     b.add_argument("--no-progress", action="store_true", help="no progress bar on stderr")
     return p
 
@@ -70,7 +73,8 @@ def batch(args: argparse.Namespace) -> int:
     try:
         counts = run_batch(files, args.out, client, density=args.density,
                            weld_tolerance=args.weld_tolerance, fuel_table=args.fuel_table,
-                           up=args.up, progress=not args.no_progress)
+                           up=args.up, progress=not args.no_progress,
+                           files_per_task=args.files_per_task)
     finally:
         client.close()
         if cluster is not None:

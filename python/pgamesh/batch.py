@@ -1,14 +1,19 @@
 """Batches of mesh files on Dask: ``python3 -m pgamesh batch PATHS_OR_GLOBS... --out FILE``.
 
-Every file is one Dask task that runs :func:`pgamesh.analyze_file` (the figures of ``pgamesh props
---json``) and returns one row; the client writes each row to the output (CSV or JSON Lines, by the
-extension) as its future completes, and flushes it. So:
+Every file is analysed in a Dask task that runs :func:`pgamesh.analyze_file` (the figures of
+``pgamesh props --json``) and returns one row; the client writes the rows to the output (CSV or
+JSON Lines, by the extension) as the futures complete, and flushes them. So:
 
 * a file that fails records its error in the ``error`` column and the batch goes on;
 * re-running with the same ``--out`` skips the files already in it, keyed by path, size and
   modification time (a file that changed is analysed again);
 * a worker killed mid-run loses nothing: the scheduler runs its tasks again elsewhere, and since
-  only the client writes, and it writes one row per future, no row appears twice.
+  only the client writes, and it writes a task's rows once, when its future completes, no row
+  appears twice.
+
+Small files are sent in groups (``--files-per-task``; by default 1 for a small batch, up to 32
+for a large one): a Dask task costs the scheduler and the client more than a small part's
+analysis.
 
 docs/python.md shows it on a LocalCluster and on a cluster of ``dask-scheduler`` and
 ``dask-worker`` processes (``--scheduler tcp://HOST:PORT``).
@@ -154,12 +159,16 @@ class RowWriter:
             self._file.write(json.dumps(row, allow_nan=False, default=str) + "\n")
         else:
             self._csv.writerow({k: ("" if v is None else v) for k, v in row.items()})
+        # Flushed, not synced: a killed client leaves every written line in the page cache (a
+        # sync per row would cost more than analysing a small part). close() syncs.
         self._file.flush()
-        os.fsync(self._file.fileno())
         self.done.add(key)
         return True
 
     def close(self) -> None:
+        """Syncs the file to disk and closes it."""
+        self._file.flush()
+        os.fsync(self._file.fileno())
         self._file.close()
 
 
@@ -189,20 +198,37 @@ class Progress:
             sys.stderr.flush()
 
 
+def analyse_group(keys: Sequence[Key], task: Callable[..., Dict[str, Any]],
+                  **options: Any) -> List[Dict[str, Any]]:
+    """The rows of a group of files, each by ``task`` (runs on a worker as one Dask task)."""
+    return [task(path, size, mtime_ns, **options) for path, size, mtime_ns in keys]
+
+
+def default_files_per_task(files: int, workers: int) -> int:
+    """Files per task: 1 for a small batch; for a large one, enough that each worker still gets
+    at least 16 tasks (load balance, progress) but at most 32 files a task. A task costs the
+    scheduler and the client a few milliseconds, more than analysing a small part."""
+    return max(1, min(32, files // (16 * max(workers, 1))))
+
+
 def run_batch(paths: Sequence[str], out: str, client: Any, *, density: Optional[float] = None,
               weld_tolerance: Optional[float] = None, fuel_table: Optional[int] = None,
               up: Sequence[float] = (0.0, 0.0, 1.0), progress: bool = True,
+              files_per_task: Optional[int] = None,
               task: Callable[..., Dict[str, Any]] = analyse) -> Dict[str, int]:
     """Analyses the files on the Dask ``client`` and appends one row per file to ``out``.
 
-    Files whose (path, size, mtime) is already in ``out`` are skipped. ``task`` is the function
-    run per file (default :func:`analyse`). Returns counts: files, skipped, written, errors.
+    Files whose (path, size, mtime) is already in ``out`` are skipped. The files go to the
+    workers in tasks of ``files_per_task`` files (default :func:`default_files_per_task`); the
+    rows of a task are written when it completes, so a task run again after its worker died
+    still writes each row once. ``task`` is the function run per file (default
+    :func:`analyse`). Returns counts: files, skipped, written, errors.
     """
     from distributed import as_completed
 
     writer = RowWriter(out)
     try:
-        todo = []
+        todo: List[Key] = []
         skipped = 0
         for path in paths:
             try:
@@ -216,30 +242,39 @@ def run_batch(paths: Sequence[str], out: str, client: Any, *, density: Optional[
                 skipped += 1
             else:
                 todo.append(key)
+        if files_per_task is None:
+            workers = len(client.scheduler_info().get("workers", {}))
+            files_per_task = default_files_per_task(len(todo), workers)
+        if files_per_task < 1:
+            raise ValueError("files_per_task must be at least 1")
         bar = Progress(len(todo), progress)
         written = errors = 0
-        submitted = []
-        for key in todo:
-            # pure=False: a new run of an unchanged file is a new task, never a stale result.
-            future = client.submit(task, key[0], key[1], key[2], density=density,
+        groups = {}
+        for first in range(0, len(todo), files_per_task):
+            group = todo[first:first + files_per_task]
+            # pure=False: a new run of unchanged files is a new task, never a stale result.
+            future = client.submit(analyse_group, group, task, density=density,
                                    weld_tolerance=weld_tolerance, fuel_table=fuel_table,
                                    up=tuple(up), pure=False)
-            submitted.append((future, key))
-        keys = {future.key: key for future, key in submitted}
-        for future in as_completed([f for f, _ in submitted]):
-            key = keys[future.key]
+            groups[future] = group
+        for future in as_completed(list(groups)):
+            group = groups.pop(future)
             try:
-                row = future.result()
+                rows = future.result()
             except Exception as e:  # the task itself died (its worker killed too often)
-                row = {c: None for c in COLUMNS}
-                row.update(path=key[0], size=key[1], mtime_ns=key[2],
-                           weld_tolerance=weld_tolerance or 0.0, error=f"{type(e).__name__}: {e}")
-            finally:
-                future.release()
-            if writer.write(row):
-                written += 1
-                errors += bool(row.get("error"))
-            bar.step(bool(row.get("error")))
+                rows = []
+                for path, size, mtime_ns in group:
+                    row = {c: None for c in COLUMNS}
+                    row.update(path=path, size=size, mtime_ns=mtime_ns,
+                               weld_tolerance=weld_tolerance or 0.0,
+                               error=f"{type(e).__name__}: {e}")
+                    rows.append(row)
+            future.release()
+            for row in rows:
+                if writer.write(row):
+                    written += 1
+                    errors += bool(row.get("error"))
+                bar.step(bool(row.get("error")))
         return {"files": len(paths), "skipped": skipped, "written": written, "errors": errors}
     finally:
         writer.close()

@@ -21,6 +21,9 @@ def mesh_files(folder: pathlib.Path):
     return sorted(p for p in folder.rglob("*") if p.is_file() and p.suffix.lower() in MESH_SUFFIXES)
 
 
+# The tests name bundled files relative to the repository, as the README does.
+os.chdir(REPO)
+
 BUNDLED = mesh_files(REPO / "data" / "meshes")
 SHARED = mesh_files(SHARED_MESHES) if SHARED_MESHES.is_dir() else []
 

@@ -112,12 +112,14 @@ def kill_worker_on(victim, marker):
     return task
 
 
-def test_killed_worker_loses_and_duplicates_nothing(client, files, tmp_path):
+@pytest.mark.parametrize("files_per_task", [1, 3])
+def test_killed_worker_loses_and_duplicates_nothing(client, files, tmp_path, files_per_task):
     paths, hostile = files
     out = str(tmp_path / "results.csv")
     marker = str(tmp_path / "killed")
     victim = os.path.basename(paths[len(paths) // 2])
-    counts = run_batch(paths, out, client, progress=False, task=kill_worker_on(victim, marker))
+    counts = run_batch(paths, out, client, progress=False, files_per_task=files_per_task,
+                       task=kill_worker_on(victim, marker))
     assert os.path.exists(marker)  # a worker did die
     assert counts["written"] == len(paths)
     check_rows(read_rows(out), paths, hostile)
