@@ -99,7 +99,8 @@ def load(source: Union[str, os.PathLike, bytes, bytearray, memoryview],
          weld_tolerance: Optional[float] = None, format: Optional[str] = None) -> Mesh:
     """Reads a mesh (STL, OBJ, PLY, OFF) from a path or bytes."""
 
-def analyze_file(path: str, *, density: Optional[float] = None, mass: Optional[float] = None,
+def analyze_file(path: Union[str, os.PathLike], *, density: Optional[float] = None,
+                 mass: Optional[float] = None,
                  weld_tolerance: Optional[float] = None, topology: bool = True,
                  format: Optional[str] = None, threads: int = 0) -> Dict[str, Any]:
     """The document of `pgamesh props --json FILE`."""

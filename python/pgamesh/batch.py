@@ -25,7 +25,6 @@ import csv
 import glob
 import io
 import json
-import math
 import os
 import sys
 import time
@@ -64,10 +63,6 @@ def file_key(path: str) -> Key:
     """(path, size, mtime_ns): what identifies a file already done."""
     st = os.stat(path)
     return (path, st.st_size, st.st_mtime_ns)
-
-
-def _number(value: Any) -> Optional[float]:
-    return None if value is None else float(value)
 
 
 def analyse(path: str, size: int, mtime_ns: int, density: Optional[float] = None,

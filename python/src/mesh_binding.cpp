@@ -235,7 +235,7 @@ py::list boundary_loops(PythonMesh& m) {
   return loops;
 }
 
-py::object analyze_file_json(const std::string& path, std::optional<double> density,
+py::object analyze_file_json(const py::object& path_like, std::optional<double> density,
                              std::optional<double> mass, std::optional<double> weld_tolerance,
                              bool topology, std::optional<std::string> format, unsigned threads) {
   AnalysisOptions options;
@@ -244,6 +244,7 @@ py::object analyze_file_json(const std::string& path, std::optional<double> dens
   options.topology = topology;
   options.topology_options.weld_tolerance = weld_tolerance_from(weld_tolerance);
   options.format = format_from(format);
+  const std::string path = py::str(py::module_::import("os").attr("fspath")(path_like));
   std::string text;
   {
     py::gil_scoped_release release;

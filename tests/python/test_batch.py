@@ -126,6 +126,13 @@ def test_killed_worker_loses_and_duplicates_nothing(client, files, tmp_path, fil
     client.wait_for_workers(2, timeout=60)  # the nanny restarted it
 
 
+def test_expand_globs_and_unmatched_patterns():
+    files, unmatched = expand([str(REPO / "data/meshes/*.stl"), str(REPO / "data/**/tank.obj"),
+                               str(REPO / "data/meshes/bunny.stl"), "no/such/*.stl"])
+    assert files == sorted({str(REPO / "data/meshes/bunny.stl"), str(REPO / "data/meshes/tank.obj")})
+    assert unmatched == ["no/such/*.stl"]
+
+
 def test_command_line(tmp_path):
     out = tmp_path / "r.csv"
     p = subprocess.run([sys.executable, "-m", "pgamesh", "batch", str(REPO / "data/meshes/*.stl"),

@@ -25,8 +25,9 @@ def check_file(cli, path):
         with pytest.raises(ValueError):
             pgamesh.load(str(path))
         return
-    # analyze_file is the CLI's document, bit for bit.
+    # analyze_file is the CLI's document, bit for bit (a str or a pathlib.Path).
     assert pgamesh.analyze_file(str(path)) == doc
+    assert pgamesh.analyze_file(path) == doc
     mesh = pgamesh.load(str(path))
     assert mesh.props() == doc
     assert mesh.format == doc["format"]
