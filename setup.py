@@ -11,6 +11,7 @@ import pathlib
 import shutil
 import subprocess
 import sys
+import sysconfig
 
 from setuptools import Extension, setup
 from setuptools.command.build_ext import build_ext
@@ -34,7 +35,8 @@ class CMakeBuild(build_ext):
         jobs = os.environ.get("PGAMESH_BUILD_JOBS", "2")
         subprocess.run(["cmake", "--build", str(build), "--target", "pgamesh_python", "-j", jobs],
                        check=True)
-        built = next((build / "python" / "pgamesh").glob("_pgamesh.*"))
+        suffix = sysconfig.get_config_var("EXT_SUFFIX")
+        built = build / "python" / "pgamesh" / ("_pgamesh" + suffix)
         target = pathlib.Path(self.get_ext_fullpath(ext.name))
         target.parent.mkdir(parents=True, exist_ok=True)
         shutil.copy2(built, target)
