@@ -72,6 +72,45 @@ def test_bad_arrays_name_the_row(vertices, faces, message):
         pgamesh.Mesh(vertices, faces)
 
 
+def test_long_calls_release_the_gil():
+    # A thread counts while the main thread reads and analyses a 50,000-triangle binary STL: with
+    # the GIL held through the C++ calls it could not count meanwhile.
+    import struct
+    import threading
+    import time
+
+    n = 50_000
+    records = np.zeros(n, dtype=[("normal", "<f4", 3), ("v", "<f4", (3, 3)), ("attr", "<u2")])
+    rng = np.random.default_rng(0)
+    records["v"] = rng.random((n, 3, 3), dtype=np.float32)
+    data = b"\0" * 80 + struct.pack("<I", n) + records.tobytes()
+    count, done = [0], threading.Event()
+
+    def counter():
+        while not done.is_set():
+            count[0] += 1
+
+    thread = threading.Thread(target=counter)
+    thread.start()
+    try:
+        # The counting rate while the main thread waits (time.sleep releases the GIL) ...
+        start, before = time.perf_counter(), count[0]
+        time.sleep(0.2)
+        rate = (count[0] - before) / (time.perf_counter() - start)
+        # ... and the count while it is inside the C++ calls. Held, the GIL would let the counter
+        # run only at the few switches between the calls (5 ms each, sys.getswitchinterval()).
+        start, before = time.perf_counter(), count[0]
+        while time.perf_counter() - start < 0.3:  # long enough for the switches not to count
+            mesh = pgamesh.load(data)
+            _ = mesh.volume, mesh.is_watertight
+        elapsed, during = time.perf_counter() - start, count[0] - before
+    finally:
+        done.set()
+        thread.join()
+    assert mesh.triangles == n
+    assert during > 0.25 * rate * elapsed
+
+
 def test_load_bytes_equals_load_path():
     data = open("data/meshes/bunny.stl", "rb").read()
     a, b = pgamesh.load(data), pgamesh.load("data/meshes/bunny.stl")
