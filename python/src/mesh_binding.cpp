@@ -13,6 +13,7 @@
 #include "pgamesh/analysis/analyze.hpp"
 #include "pgamesh/io/mesh_format.hpp"
 #include "pgamesh/io/read_mesh.hpp"
+#include "pgamesh/mesh/topology/topology.hpp"
 #include "props_report.hpp"
 
 namespace pgamesh::python {
@@ -383,6 +384,38 @@ mesh exposes are read-only views.)");
             return json_to_python(cli::json_text(cli::check_fields(s.mesh, s.source, a, nullptr)));
           },
           "The full topology report of `pgamesh check --json`, as a dict.")
+      .def(py::pickle(
+          [](const PythonMesh& s) {
+            // The arrays (copies) and what the reader said of the source: a mesh sent to a Dask
+            // worker gives the same figures there.
+            const py::array_t<double> vertices(
+                {static_cast<py::ssize_t>(s.mesh.vertices.size()), py::ssize_t{3}},
+                &s.mesh.vertices.data()->x);
+            return py::make_tuple(
+                vertices,
+                py::array_t<std::uint32_t>(static_cast<py::ssize_t>(s.mesh.corners.size()),
+                                           s.mesh.corners.data()),
+                py::array_t<std::uint32_t>(static_cast<py::ssize_t>(s.mesh.face_offsets.size()),
+                                           s.mesh.face_offsets.data()),
+                s.weld_tolerance, s.source.path, std::string(format_name(s.source.format)),
+                s.source.single_precision, s.source.warnings);
+          },
+          [](const py::tuple& t) {
+            if (t.size() != 8) throw py::value_error("not a pickled pgamesh.Mesh");
+            auto m = std::make_unique<PythonMesh>();
+            m->mesh.vertices = vertices_from(t[0]);
+            const auto corners = t[1].cast<py::array_t<std::uint32_t, py::array::forcecast>>();
+            const auto offsets = t[2].cast<py::array_t<std::uint32_t, py::array::forcecast>>();
+            m->mesh.corners.assign(corners.data(), corners.data() + corners.size());
+            m->mesh.face_offsets.assign(offsets.data(), offsets.data() + offsets.size());
+            check_mesh_structure(m->mesh);  // std::out_of_range (IndexError) when inconsistent
+            m->weld_tolerance = t[3].cast<double>();
+            m->source.path = t[4].cast<std::string>();
+            m->source.format = format_from_name(t[5].cast<std::string>());
+            m->source.single_precision = t[6].cast<bool>();
+            m->source.warnings = t[7].cast<std::vector<std::string>>();
+            return m;
+          }))
       .def("__repr__", [](PythonMesh& s) {
         return "<pgamesh.Mesh " + std::to_string(s.mesh.vertices.size()) + " vertices, " +
                std::to_string(s.mesh.face_count()) + " faces>";

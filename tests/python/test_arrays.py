@@ -117,3 +117,13 @@ def test_load_bytes_equals_load_path():
     assert a.volume == b.volume and np.array_equal(a.moment_inertia, b.moment_inertia)
     c = pgamesh.Mesh(b.vertices, b.faces)
     assert c.volume == b.volume  # the arrays round-trip to the same figures, bit for bit
+
+
+def test_pickle_round_trip():
+    import pickle
+
+    mesh = pgamesh.load("data/meshes/tank.obj")
+    copy = pickle.loads(pickle.dumps(mesh))
+    np.testing.assert_array_equal(copy.vertices, mesh.vertices)
+    np.testing.assert_array_equal(copy.face_offsets, mesh.face_offsets)
+    assert copy.format == mesh.format and copy.props() == mesh.props()
