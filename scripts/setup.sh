@@ -1,13 +1,17 @@
 #!/usr/bin/env bash
 # Installs the Debian packages pgamesh needs to build, test and benchmark. Idempotent: it asks apt
-# only for what is missing. Usage: scripts/setup.sh [build|test|bench]
+# only for what is missing. Usage: scripts/setup.sh [build|test|bench]. The build group includes
+# what the Python package needs to build and run (pybind11, the Python headers, numpy, Dask's
+# distributed; docs/python.md); scripts/install_python.sh installs the package once built.
 set -euo pipefail
 what=${1:-build}
 pkgs=(cmake ninja-build g++ make pkg-config libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev
-      libgmp-dev libcpp-httplib-dev libcli11-dev)
+      libgmp-dev libcpp-httplib-dev libcli11-dev pybind11-dev python3-dev python3-numpy
+      python3-distributed)
 case "$what" in
-  test) pkgs+=(clang libclang-rt-14-dev clang-format chromium curl) ;;
-  bench) pkgs+=(admesh hyperfine libcgal-dev python3-vtk9 python3-stl python3-open3d python3-numpy time) ;;
+  test) pkgs+=(clang libclang-rt-14-dev clang-format chromium curl python3-pytest python3-pytest-timeout) ;;
+  bench) pkgs+=(admesh hyperfine libcgal-dev python3-vtk9 python3-stl python3-open3d python3-numpy time
+                python3-matplotlib) ;;
 esac
 # The viewer's page needs node and npm (for three.js and, in tests, playwright-core): Debian's
 # only when the machine has none of its own.

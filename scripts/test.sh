@@ -24,12 +24,18 @@ scripts/setup.sh test
 stage "format check"
 git ls-files '*.cpp' '*.hpp' | xargs -r clang-format --dry-run --Werror
 
-stage "release build of the programs (library, pgamesh, pgamesh-serve), warnings as errors"
+stage "release build of the programs (library, pgamesh, pgamesh-serve, Python module), warnings as errors"
 cmake --preset release > /dev/null
-cmake --build --preset release -j "$jobs" --target pgamesh_cli pgamesh_serve pgamesh_models
+cmake --build --preset release -j "$jobs" --target pgamesh_cli pgamesh_serve pgamesh_models \
+  pgamesh_python
 
 stage "installed package (find_package, the README example, the installed viewer)"
 tests/install/run.sh build/release
+
+stage "Python package (installed for python3, pytest against the release pgamesh)"
+scripts/install_python.sh build/release
+PGAMESH_CLI=build/release/pgamesh timeout --kill-after=10 400 \
+  python3 -m pytest -q -p no:cacheprovider tests/python
 
 if [ -x build/release/pgamesh-serve ]; then
   # The installed copy, started from a folder outside the clone: the page, three.js and the
