@@ -4,10 +4,10 @@
 set -euo pipefail
 what=${1:-build}
 pkgs=(cmake ninja-build g++ make pkg-config libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev
-      libgmp-dev libcpp-httplib-dev libcli11-dev)
+      libgmp-dev libcpp-httplib-dev libcli11-dev libzip-dev libpugixml-dev)
 case "$what" in
   test) pkgs+=(clang libclang-rt-14-dev clang-format chromium curl) ;;
-  bench) pkgs+=(admesh hyperfine libcgal-dev python3-vtk9 python3-stl python3-open3d python3-numpy time) ;;
+  bench) pkgs+=(admesh hyperfine libcgal-dev python3-vtk9 python3-stl python3-open3d python3-numpy time assimp-utils) ;;
 esac
 # The viewer's page needs node and npm (for three.js and, in tests, playwright-core): Debian's
 # only when the machine has none of its own.
