@@ -213,9 +213,11 @@ Analysis analyze(std::span<const char> bytes, const std::string& name,
   // The format by content, looked at once; a forced format picks the reader family.
   const MeshFormat detected = detect_format(bytes);
   const MeshFormat format = options.format == MeshFormat::unknown ? detected : options.format;
-  const bool stl_allowed = options.format == MeshFormat::unknown ||
-                           options.format == MeshFormat::stl_binary ||
-                           options.format == MeshFormat::stl_ascii;
+  // A zip (3MF) whose size happens to fit the binary STL arithmetic is still a zip, as
+  // detect_format() says.
+  const bool stl_allowed =
+      (options.format == MeshFormat::unknown && detected != MeshFormat::threemf) ||
+      options.format == MeshFormat::stl_binary || options.format == MeshFormat::stl_ascii;
   const bool weld_from_records = options.topology && options.topology_options.weld_tolerance == 0 &&
                                  options.format != MeshFormat::stl_ascii;
   if ((!options.topology || weld_from_records) && stl_allowed) {
