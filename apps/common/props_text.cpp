@@ -30,8 +30,13 @@ std::string topology_line(const std::optional<TopologyReport>& topology) {
 // " mm^3" and the like after a figure when the file states its unit, nothing otherwise.
 std::string unit_suffix(LengthUnit u, int power) {
   if (u == LengthUnit::unspecified) return "";
-  std::string s = std::string(" ") + unit_name(u);
-  if (power > 1) s += "^" + std::to_string(power);
+  // Appended piece by piece: GCC 12's -Wrestrict misfires on `"literal" + std::string&&`.
+  std::string s = " ";
+  s += unit_name(u);
+  if (power > 1) {
+    s += '^';
+    s += std::to_string(power);
+  }
   return s;
 }
 
