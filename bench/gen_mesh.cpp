@@ -1,8 +1,8 @@
 // Benchmark input generator: a closed, outward torus of about N triangles written as binary STL,
 // ASCII STL, OBJ, ASCII PLY, binary PLY (little-endian float32 vertices, uchar/int faces: 19 B per
-// triangle) or OFF. Coordinates are rounded to float32 first, so every format holds the same
-// numbers and every tool reads the same solid.
-//   pgamesh_gen_mesh TRIANGLES FORMAT OUT     FORMAT: stl | stl-ascii | obj | ply | ply-bin | off
+// triangle), OFF or 3MF (pgamesh's writer, millimeter). Coordinates are rounded to float32 first,
+// so every format holds the same numbers and every tool reads the same solid.
+//   pgamesh_gen_mesh TRIANGLES FORMAT OUT  FORMAT: stl|stl-ascii|obj|ply|ply-bin|off|3mf
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -12,6 +12,8 @@
 #include <numbers>
 #include <string>
 #include <vector>
+
+#include "pgamesh/io/write_mesh.hpp"
 
 namespace {
 
@@ -55,7 +57,7 @@ int fail(const char* what) {
 
 int main(int argc, char** argv) {
   if (argc != 4)
-    return fail("usage: pgamesh_gen_mesh TRIANGLES stl|stl-ascii|obj|ply|ply-bin|off OUT");
+    return fail("usage: pgamesh_gen_mesh TRIANGLES stl|stl-ascii|obj|ply|ply-bin|off|3mf OUT");
   const long long n = std::atoll(argv[1]);
   if (n < 8 || n > 200000000) return fail("TRIANGLES must be from 8 to 2e8");
   const std::string format = argv[2];
@@ -118,9 +120,19 @@ int main(int argc, char** argv) {
       else
         std::fprintf(out, "3 %u %u %u\n", m.t[3 * f], m.t[3 * f + 1], m.t[3 * f + 2]);
     }
+  } else if (format == "3mf") {
+    pgamesh::Mesh mesh;
+    for (std::size_t k = 0; k < m.vertices(); ++k)
+      mesh.vertices.push_back({p(k)[0], p(k)[1], p(k)[2]});
+    for (std::size_t f = 0; f < m.triangles(); ++f)
+      mesh.add_face({m.t[3 * f], m.t[3 * f + 1], m.t[3 * f + 2]});
+    pgamesh::WriteOptions o;
+    o.unit = pgamesh::LengthUnit::millimeter;
+    const std::string bytes = pgamesh::write_mesh_bytes(mesh, pgamesh::MeshFormat::threemf, o);
+    std::fwrite(bytes.data(), 1, bytes.size(), out);
   } else {
     std::fclose(out);
-    return fail("unknown format (stl, stl-ascii, obj, ply, ply-bin, off)");
+    return fail("unknown format (stl, stl-ascii, obj, ply, ply-bin, off, 3mf)");
   }
   if (std::fclose(out) != 0) return fail("write failed");
   std::printf("%zu triangles, %zu vertices\n", m.triangles(), m.vertices());

@@ -6,12 +6,12 @@
 set -euo pipefail
 what=${1:-build}
 pkgs=(cmake ninja-build g++ make pkg-config libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev
-      libgmp-dev libcpp-httplib-dev libcli11-dev pybind11-dev python3-dev python3-numpy
-      python3-distributed)
+      libgmp-dev libcpp-httplib-dev libcli11-dev libzip-dev libpugixml-dev pybind11-dev python3-dev
+      python3-numpy python3-distributed)
 case "$what" in
   test) pkgs+=(clang libclang-rt-14-dev clang-format chromium curl python3-pytest python3-pytest-timeout) ;;
   bench) pkgs+=(admesh hyperfine libcgal-dev python3-vtk9 python3-stl python3-open3d python3-numpy time
-                python3-matplotlib) ;;
+                python3-matplotlib assimp-utils) ;;
 esac
 # The viewer's page needs node and npm (for three.js and, in tests, playwright-core): Debian's
 # only when the machine has none of its own.

@@ -86,7 +86,8 @@ void add_props_command(CLI::App& app) {
       "Area, signed volume, mass, centre of mass, inertia (about the centre of mass and the\n"
       "origin), products of inertia, principal moments and axes, gap area, and the topology\n"
       "summary (closed, boundary and non-manifold edges, orientation) of a mesh file\n"
-      "(STL ASCII/binary, OBJ, PLY, OFF).");
+      "(STL ASCII/binary, OBJ, PLY, OFF, 3MF). A 3MF file's figures are in its unit, given\n"
+      "with them, and each build item is also reported alone.");
   sub->footer(
       "Convention: the inertia tensor's off-diagonal entries are MINUS the products of inertia\n"
       "(I_xy = -integral x y dm); principal moments ascending with right-handed unit axes.\n"

@@ -97,7 +97,7 @@ CLI::Option* add_numbers(CLI::App& sub, const std::string& name, std::vector<dou
                          const std::string& description, std::size_t size = 0);
 CLI::Option* add_vec3(CLI::App& sub, const std::string& name, Vec3d& out,
                       const std::string& description);
-// --format F: stl, obj, ply, off or auto (MeshFormat::unknown: from the content).
+// --format F: stl, obj, ply, off, 3mf or auto (MeshFormat::unknown: from the content).
 CLI::Option* add_format(CLI::App& sub, MeshFormat& out);
 
 // ---- commands that parse their own argv (calc) --------------------------------------------------

@@ -191,9 +191,9 @@ CLI::Option* add_format(CLI::App& sub, MeshFormat& out) {
             out = format_from_name(name);
             if (out == MeshFormat::unknown)
               throw CLI::ValidationError(
-                  "--format", "unknown format '" + name + "' (stl, obj, ply, off or auto)");
+                  "--format", "unknown format '" + name + "' (stl, obj, ply, off, 3mf or auto)");
           },
-          "read FILE as F: stl, obj, ply, off (default auto: from the content)")
+          "read FILE as F: stl, obj, ply, off, 3mf (default auto: from the content)")
       ->type_name("F");
 }
 

@@ -12,6 +12,36 @@ Json products(const ProductsOfInertia& p) {
   return Json{{"xy", p.xy}, {"yz", p.yz}, {"zx", p.zx}};
 }
 
+// One part alone (Analysis::parts): the figures of the top level under the same names.
+Json part_json(const PartAnalysis& p) {
+  const MassProperties& m = p.mass;
+  Json j;
+  j["name"] = p.part.name;
+  j["first_face"] = p.part.first_face;
+  j["faces"] = m.faces;
+  j["triangles"] = m.triangles;
+  j["area"] = json_number(m.area);
+  j["volume"] = json_number(m.volume);
+  j["mass"] = json_number(m.mass);
+  j["center_of_mass"] = json_vec3(m.center_of_mass);
+  j["inertia_com"] = json_matrix3(m.inertia_com);
+  j["gap_area"] = json_number(m.gap_area);
+  if (p.topology) {
+    j["closed"] = p.topology->closed;
+    j["boundary_edges"] = p.topology->boundary_edges;
+    j["nonmanifold_edges"] = p.topology->nonmanifold_edges;
+    j["orientation_consistent"] = p.topology->orientation_consistent;
+    j["components"] = p.topology->components;
+  } else {
+    for (const char* k :
+         {"closed", "boundary_edges", "nonmanifold_edges", "orientation_consistent", "components"})
+      j[k] = nullptr;
+  }
+  j["volume_valid"] = p.volume_valid ? Json(*p.volume_valid) : Json(nullptr);
+  j["reasons"] = json_strings(p.reasons);
+  return j;
+}
+
 }  // namespace
 
 std::string props_json(const Analysis& r) {
@@ -90,6 +120,10 @@ std::string props_json(const Analysis& r) {
   j["volume_valid"] = r.volume_valid ? Json(*r.volume_valid) : Json(nullptr);
   j["reasons"] = json_strings(r.reasons);
   j["warnings"] = json_strings(r.warnings);
+  j["unit"] = r.unit == LengthUnit::unspecified ? Json(nullptr) : Json(unit_name(r.unit));
+  Json parts = Json::array();
+  for (const PartAnalysis& p : r.parts) parts.push_back(part_json(p));
+  j["parts"] = std::move(parts);
   return json_text(j);
 }
 

@@ -15,9 +15,9 @@ void matrix(std::string& out, const Mat3& m) {
     append(out, "    [ %22.15g %22.15g %22.15g ]\n", row[0], row[1], row[2]);
 }
 
-std::string topology_line(const Analysis& r) {
-  if (!r.topology) return "not computed (--no-topology)";
-  const TopologyReport& t = *r.topology;
+std::string topology_line(const std::optional<TopologyReport>& topology) {
+  if (!topology) return "not computed (--no-topology)";
+  const TopologyReport& t = *topology;
   std::string s = t.closed ? "closed" : "OPEN";
   s += t.orientation_consistent ? ", orientation consistent" : ", orientation INCONSISTENT";
   s += ", " + std::to_string(t.boundary_edges) + " boundary edges, " +
@@ -25,6 +25,40 @@ std::string topology_line(const Analysis& r) {
        std::to_string(t.components) + (t.components == 1 ? " component" : " components");
   if (t.duplicated_faces) s += ", " + std::to_string(t.duplicated_faces) + " duplicated faces";
   return s;
+}
+
+// " mm^3" and the like after a figure when the file states its unit, nothing otherwise.
+std::string unit_suffix(LengthUnit u, int power) {
+  if (u == LengthUnit::unspecified) return "";
+  // Appended piece by piece: GCC 12's -Wrestrict misfires on `"literal" + std::string&&`.
+  std::string s = " ";
+  s += unit_name(u);
+  if (power > 1) {
+    s += '^';
+    s += std::to_string(power);
+  }
+  return s;
+}
+
+// One line per part (3MF build item): its figures alone; the report above is the whole.
+void parts_lines(std::string& out, const Analysis& r) {
+  if (r.parts.empty()) return;
+  append(out, "parts             %zu (each alone below; the figures above are the whole)\n",
+         r.parts.size());
+  const std::string u1 = unit_suffix(r.unit, 1), u2 = unit_suffix(r.unit, 2),
+                    u3 = unit_suffix(r.unit, 3);
+  for (std::size_t i = 0; i < r.parts.size(); ++i) {
+    const PartAnalysis& p = r.parts[i];
+    append(out, "  %zu '%s': %llu faces, area %.15g%s, volume %.15g%s, mass %.15g", i + 1,
+           p.part.name.c_str(), static_cast<unsigned long long>(p.mass.faces), p.mass.area,
+           u2.c_str(), p.mass.volume, u3.c_str(), p.mass.mass);
+    if (std::isfinite(p.mass.center_of_mass.x))
+      append(out, ", centre of mass %.15g %.15g %.15g%s", p.mass.center_of_mass.x,
+             p.mass.center_of_mass.y, p.mass.center_of_mass.z, u1.c_str());
+    append(out, "\n      topology %s\n", topology_line(p.topology).c_str());
+    if (p.volume_valid.has_value() && !*p.volume_valid)
+      for (const auto& reason : p.reasons) out += "      not a solid: " + reason + "\n";
+  }
 }
 
 // An XML comment: "--" may not occur inside one.
@@ -58,23 +92,30 @@ std::string props_text(const Analysis& r, bool about_origin) {
   std::string out;
   append(out, "file              %s (%s%s%s)\n", r.file.c_str(), format_name(r.format),
          r.single_precision ? ", float32" : "", r.streamed ? ", streamed" : "");
+  if (r.unit != LengthUnit::unspecified)
+    append(out, "unit              %s (stated by the file; lengths, areas, volumes in it)\n",
+           unit_name(r.unit));
+  const std::string u1 = unit_suffix(r.unit, 1), u2 = unit_suffix(r.unit, 2),
+                    u3 = unit_suffix(r.unit, 3);
   append(out, "faces             %llu (%llu triangles), %llu vertices",
          static_cast<unsigned long long>(m.faces), static_cast<unsigned long long>(m.triangles),
          static_cast<unsigned long long>(m.vertices));
   if (r.topology)
     append(out, " (%llu after welding)", static_cast<unsigned long long>(r.topology->vertices));
-  append(out, "\ntopology          %s\n", topology_line(r).c_str());
-  append(out, "area              %.15g\n", m.area);
-  append(out, "volume            %.15g (signed: positive for outward faces)\n", m.volume);
+  append(out, "\ntopology          %s\n", topology_line(r.topology).c_str());
+  append(out, "area              %.15g%s\n", m.area, u2.c_str());
+  append(out, "volume            %.15g%s (signed: positive for outward faces)\n", m.volume,
+         u3.c_str());
   append(out, "density           %.15g%s\n", m.density,
          r.density_from_mass ? " (from the given mass)" : "");
   append(out, "mass              %.15g\n", m.mass);
-  append(out, "gap area          %.15g (1/2 |sum of face carriers|: 0 when closed)\n", m.gap_area);
+  append(out, "gap area          %.15g%s (1/2 |sum of face carriers|: 0 when closed)\n", m.gap_area,
+         u2.c_str());
   if (!std::isfinite(m.center_of_mass.x)) {
     out += "centre of mass    undefined (zero volume)\n";
   } else {
-    append(out, "centre of mass    %.15g %.15g %.15g\n", m.center_of_mass.x, m.center_of_mass.y,
-           m.center_of_mass.z);
+    append(out, "centre of mass    %.15g %.15g %.15g%s\n", m.center_of_mass.x, m.center_of_mass.y,
+           m.center_of_mass.z, u1.c_str());
     out +=
         "inertia about the centre of mass (tensor; off-diagonals are MINUS the products of "
         "inertia, I_xy = -integral x y dm):\n";
@@ -110,6 +151,7 @@ std::string props_text(const Analysis& r, bool about_origin) {
   } else if (!r.volume_valid.has_value()) {
     out += "note: topology not computed, so closedness was not checked\n";
   }
+  parts_lines(out, r);
   for (const auto& w : r.warnings) out += "warning: " + w + "\n";
   return out;
 }

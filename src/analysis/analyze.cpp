@@ -77,6 +77,7 @@ Analysis mass_report(MassProperties mass, const MeshSource& source,
   r.format = source.format;
   r.single_precision = source.single_precision;
   r.density_from_mass = options.mass.mass.has_value();
+  r.unit = source.unit;
   r.mass = std::move(mass);
   r.warnings = source.warnings;
   r.warnings.insert(r.warnings.end(), r.mass.warnings.begin(), r.mass.warnings.end());
@@ -85,6 +86,52 @@ Analysis mass_report(MassProperties mass, const MeshSource& source,
 
 Analysis mass_report(const Mesh& mesh, const MeshSource& source, const AnalysisOptions& options) {
   return mass_report(mass_properties(mesh, options.mass, &source), source, options);
+}
+
+// The faces of `part` as a mesh of their own, with the vertices from the lowest to the highest
+// index they use (a 3MF build item's vertices are contiguous).
+Mesh part_mesh(const Mesh& mesh, const MeshPart& part) {
+  Mesh sub;
+  const std::uint32_t first = mesh.face_offsets[part.first_face];
+  const std::uint32_t last = mesh.face_offsets[part.first_face + part.face_count];
+  if (first == last) return sub;
+  const auto [lo, hi] =
+      std::minmax_element(mesh.corners.begin() + first, mesh.corners.begin() + last);
+  sub.vertices.assign(mesh.vertices.begin() + *lo, mesh.vertices.begin() + *hi + 1);
+  sub.corners.reserve(last - first);
+  for (std::uint32_t k = first; k < last; ++k) sub.corners.push_back(mesh.corners[k] - *lo);
+  sub.face_offsets.reserve(part.face_count + 1);
+  for (std::uint32_t f = part.first_face + 1; f <= part.first_face + part.face_count; ++f)
+    sub.face_offsets.push_back(mesh.face_offsets[f] - first);
+  return sub;
+}
+
+// Whether the file's only part is all of its faces: then the part's figures are the whole's,
+// taken from it (whole_as_part) rather than computed twice.
+bool one_whole_part(const Mesh& mesh, const MeshSource& source) {
+  return source.parts.size() == 1 && source.parts[0].first_face == 0 &&
+         source.parts[0].face_count == mesh.face_count();
+}
+
+std::vector<PartAnalysis> whole_as_part(const Analysis& whole, const MeshPart& part) {
+  return {{part, whole.mass, whole.topology, whole.volume_valid, whole.reasons}};
+}
+
+// Each part analysed alone by analyze_mesh() (a part mesh has no parts of its own).
+std::vector<PartAnalysis> part_analyses(const Mesh& mesh, const MeshSource& source,
+                                        const AnalysisOptions& options) {
+  std::vector<PartAnalysis> out;
+  if (one_whole_part(mesh, source)) return out;  // whole_as_part, once the whole is known
+  MeshSource part_source;
+  part_source.path = source.path;
+  part_source.format = source.format;
+  part_source.unit = source.unit;
+  for (const MeshPart& part : source.parts) {
+    Analysis a = analyze_mesh(part_mesh(mesh, part), part_source, options);
+    out.push_back(
+        {part, std::move(a.mass), std::move(a.topology), a.volume_valid, std::move(a.reasons)});
+  }
+  return out;
 }
 
 // The report of a PLY file without topology, its faces summed as the PLY reader parses them (its
@@ -143,8 +190,10 @@ std::optional<Analysis> ply_topology_report(std::span<const char> bytes, const s
 
 Analysis analyze_mesh(const Mesh& mesh, const MeshSource& source, const AnalysisOptions& options) {
   Analysis r = mass_report(mesh, source, options);
+  r.parts = part_analyses(mesh, source, options);
   if (options.topology) r.topology = analyze_topology(mesh, options.topology_options);
   judge(r);
+  if (one_whole_part(mesh, source)) r.parts = whole_as_part(r, source.parts[0]);
   return r;
 }
 
@@ -164,9 +213,11 @@ Analysis analyze(std::span<const char> bytes, const std::string& name,
   // The format by content, looked at once; a forced format picks the reader family.
   const MeshFormat detected = detect_format(bytes);
   const MeshFormat format = options.format == MeshFormat::unknown ? detected : options.format;
-  const bool stl_allowed = options.format == MeshFormat::unknown ||
-                           options.format == MeshFormat::stl_binary ||
-                           options.format == MeshFormat::stl_ascii;
+  // A zip (3MF) whose size happens to fit the binary STL arithmetic is still a zip, as
+  // detect_format() says.
+  const bool stl_allowed =
+      (options.format == MeshFormat::unknown && detected != MeshFormat::threemf) ||
+      options.format == MeshFormat::stl_binary || options.format == MeshFormat::stl_ascii;
   const bool weld_from_records = options.topology && options.topology_options.weld_tolerance == 0 &&
                                  options.format != MeshFormat::stl_ascii;
   if ((!options.topology || weld_from_records) && stl_allowed) {
@@ -216,8 +267,11 @@ Analysis analyze(std::span<const char> bytes, const std::string& name,
   Mesh mesh = detail::read_mesh_bytes(bytes, name, &source, options.format, release_records);
   source.path = name;
   Analysis r = mass_report(mesh, source, options);
+  r.parts = part_analyses(mesh, source, options);
+  const bool whole_part = one_whole_part(mesh, source);
   if (options.topology) r.topology = analyze_topology(std::move(mesh), options.topology_options);
   judge(r);
+  if (whole_part) r.parts = whole_as_part(r, source.parts[0]);
   return r;
 }
 

@@ -40,6 +40,8 @@ const char* format_name(MeshFormat f) {
       return "ply-binary-big-endian";
     case MeshFormat::off:
       return "off";
+    case MeshFormat::threemf:
+      return "3mf";
     case MeshFormat::unknown:
       break;
   }
@@ -57,6 +59,7 @@ MeshFormat format_from_name(std::string_view name) {
   if (n == "ply-binary-big-endian" || n == "ply-be" || n == "ply_binary_be")
     return MeshFormat::ply_binary_be;
   if (n == "off") return MeshFormat::off;
+  if (n == "3mf") return MeshFormat::threemf;
   return MeshFormat::unknown;
 }
 
@@ -68,6 +71,7 @@ MeshFormat format_for_extension(std::string_view path, MeshFormat preferred) {
   if (ext == "ply") return is_ply(preferred) ? preferred : MeshFormat::ply_binary_le;
   if (ext == "obj") return MeshFormat::obj;
   if (ext == "off") return MeshFormat::off;
+  if (ext == "3mf") return MeshFormat::threemf;
   return MeshFormat::unknown;
 }
 

@@ -67,6 +67,8 @@ bool is_ply_family(MeshFormat f) {
 
 MeshFormat detect_format(std::span<const char> bytes) {
   if (bytes.empty()) return MeshFormat::unknown;
+  if (bytes.size() >= 4 && std::memcmp(bytes.data(), "PK\x03\x04", 4) == 0)
+    return MeshFormat::threemf;  // a zip archive: the only zip-packaged format read
   if (bytes.size() >= stl_header_bytes &&
       stl_header_bytes + stl_record_bytes * std::uint64_t{le32(bytes.data() + 80)} == bytes.size())
     return MeshFormat::stl_binary;
@@ -121,9 +123,11 @@ Mesh detail::read_mesh_bytes(std::span<const char> bytes, const std::string& nam
     detail::read_obj(bytes, name, mesh, src, release_pages);
   } else if (f == MeshFormat::off) {
     detail::read_off(bytes, name, mesh, src, release_pages);
+  } else if (f == MeshFormat::threemf) {
+    detail::read_3mf(bytes, name, mesh, src);
   } else {
     throw InputError(name, detail::text_position(bytes.data(), bytes.data()),
-                     "unrecognised mesh format (expected STL, OBJ, PLY or OFF content)");
+                     "unrecognised mesh format (expected STL, OBJ, PLY, OFF or 3MF content)");
   }
   // The readers release in steps as they go; the last step and the first page (detection) too.
   if (release_pages) detail::release_pages(bytes.data(), bytes.data() + bytes.size());

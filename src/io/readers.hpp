@@ -29,6 +29,8 @@ void read_ply(std::span<const char> bytes, const std::string& name, Mesh& mesh, 
               bool release_pages = false);
 void read_off(std::span<const char> bytes, const std::string& name, Mesh& mesh, MeshSource& source,
               bool release_pages = false);
+// A 3MF package (zip): the whole build, one MeshPart per build item, the unit in `source`.
+void read_3mf(std::span<const char> bytes, const std::string& name, Mesh& mesh, MeshSource& source);
 
 // The boundary sums of a PLY file's faces about `reference` (reference_point of its vertices),
 // accumulated as mesh_boundary_sums accumulates them, and the face counts.

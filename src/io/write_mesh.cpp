@@ -7,6 +7,7 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "io/zip_package.hpp"
 #include "pgamesh/io/write_file.hpp"
 
 namespace pgamesh {
@@ -218,6 +219,85 @@ std::string ply(const Mesh& mesh, MeshFormat format, const WriteOptions& o) {
   return out;
 }
 
+// 3MF's spelled-out unit names (core specification §3.4.1); millimeter, its default, when the
+// mesh's unit is not stated.
+const char* threemf_unit(LengthUnit u) {
+  switch (u) {
+    case LengthUnit::micron:
+      return "micron";
+    case LengthUnit::centimeter:
+      return "centimeter";
+    case LengthUnit::inch:
+      return "inch";
+    case LengthUnit::foot:
+      return "foot";
+    case LengthUnit::meter:
+      return "meter";
+    case LengthUnit::millimeter:
+    case LengthUnit::unspecified:
+      break;
+  }
+  return "millimeter";
+}
+
+// A 3MF package of one object: polygons as fans (as for STL); 3MF forbids a triangle that repeats
+// a vertex, so such a face is refused rather than written into a file no reader accepts.
+std::string threemf(const Mesh& mesh, const WriteOptions& o) {
+  std::string model =
+      "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+      "<model unit=\"";
+  model += threemf_unit(o.unit);
+  model +=
+      "\" xml:lang=\"en-US\" "
+      "xmlns=\"http://schemas.microsoft.com/3dmanufacturing/core/2015/02\">\n"
+      " <resources>\n  <object id=\"1\" type=\"model\">\n   <mesh>\n    <vertices>\n";
+  model.reserve(model.size() + mesh.vertices.size() * 90 + triangle_count(mesh) * 50 + 256);
+  for (const Vec3d& v : mesh.vertices) {
+    model += "     <vertex x=\"";
+    put_double(model, v.x);
+    model += "\" y=\"";
+    put_double(model, v.y);
+    model += "\" z=\"";
+    put_double(model, v.z);
+    model += "\"/>\n";
+  }
+  model += "    </vertices>\n    <triangles>\n";
+  for (std::size_t f = 0; f < mesh.face_count(); ++f) {
+    const std::uint32_t* c = mesh.face(f);
+    for (std::size_t k = 1; k + 1 < mesh.face_size(f); ++k) {
+      if (c[0] == c[k] || c[k] == c[k + 1] || c[0] == c[k + 1])
+        throw std::invalid_argument("write_mesh: face " + std::to_string(f) +
+                                    " repeats a vertex, which 3MF forbids");
+      model += "     <triangle v1=\"";
+      put_uint(model, c[0]);
+      model += "\" v2=\"";
+      put_uint(model, c[k]);
+      model += "\" v3=\"";
+      put_uint(model, c[k + 1]);
+      model += "\"/>\n";
+    }
+  }
+  model +=
+      "    </triangles>\n   </mesh>\n  </object>\n </resources>\n"
+      " <build>\n  <item objectid=\"1\"/>\n </build>\n</model>\n";
+  const std::string content_types =
+      "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+      "<Types xmlns=\"http://schemas.openxmlformats.org/package/2006/content-types\">\n"
+      " <Default Extension=\"rels\" "
+      "ContentType=\"application/vnd.openxmlformats-package.relationships+xml\"/>\n"
+      " <Default Extension=\"model\" "
+      "ContentType=\"application/vnd.ms-package.3dmanufacturing-3dmodel+xml\"/>\n"
+      "</Types>\n";
+  const std::string rels =
+      "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+      "<Relationships xmlns=\"http://schemas.openxmlformats.org/package/2006/relationships\">\n"
+      " <Relationship Target=\"/3D/3dmodel.model\" Id=\"rel0\" "
+      "Type=\"http://schemas.microsoft.com/3dmanufacturing/2013/01/3dmodel\"/>\n"
+      "</Relationships>\n";
+  return detail::zip_archive(
+      {{"[Content_Types].xml", content_types}, {"_rels/.rels", rels}, {"3D/3dmodel.model", model}});
+}
+
 }  // namespace
 
 std::string write_mesh_bytes(const Mesh& mesh, MeshFormat format, const WriteOptions& options) {
@@ -235,6 +315,8 @@ std::string write_mesh_bytes(const Mesh& mesh, MeshFormat format, const WriteOpt
       return ply(mesh, format, options);
     case MeshFormat::off:
       return off(mesh);
+    case MeshFormat::threemf:
+      return threemf(mesh, options);
     case MeshFormat::unknown:
       break;
   }

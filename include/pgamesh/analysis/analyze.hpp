@@ -22,6 +22,16 @@ struct AnalysisOptions {
   MeshFormat format = MeshFormat::unknown;  // forced reader family (unknown: from the content)
 };
 
+// The analysis of one part of a file that holds several (MeshSource::parts: a 3MF build item):
+// analyze_mesh() of the part's faces alone, with the vertices they use.
+struct PartAnalysis {
+  MeshPart part;
+  MassProperties mass;
+  std::optional<TopologyReport> topology;
+  std::optional<bool> volume_valid;
+  std::vector<std::string> reasons;
+};
+
 struct Analysis {
   std::string file;
   MeshFormat format = MeshFormat::unknown;
@@ -32,9 +42,13 @@ struct Analysis {
   // Whether the volume, centre of mass and inertia describe a solid: false for an open,
   // inconsistently oriented, inward or flat mesh, absent when unknown for want of topology.
   std::optional<bool> volume_valid;
-  std::vector<std::string> reasons;   // why the volume is not valid, in plain words
-  std::vector<std::string> warnings;  // reader repairs, float32 precision, …
-  bool density_from_mass = false;     // the density was derived from options.mass.mass
+  std::vector<std::string> reasons;           // why the volume is not valid, in plain words
+  std::vector<std::string> warnings;          // reader repairs, float32 precision, …
+  bool density_from_mass = false;             // the density was derived from options.mass.mass
+  LengthUnit unit = LengthUnit::unspecified;  // the unit the file states (3MF), figures are in it
+  // One per part when the file holds several (MeshSource::parts); the figures above are those of
+  // the whole (mass properties add up; topology is per part).
+  std::vector<PartAnalysis> parts;
 };
 
 // Reads the file at `path` ("-" for standard input) and analyses it. A binary STL is never read

@@ -20,7 +20,8 @@ enum class MeshFormat {
   ply_ascii,
   ply_binary_le,
   ply_binary_be,
-  off
+  off,
+  threemf
 };
 
 struct Mesh {

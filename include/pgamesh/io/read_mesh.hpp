@@ -1,7 +1,7 @@
-// Reading meshes: STL (ASCII and binary), OBJ, PLY (ASCII, binary little/big endian) and OFF, with
-// the format detected from the content (docs/formats.md). Vertices are kept as given (no welding;
-// STL gives three fresh vertices per facet) and faces as polygons (no triangulation). Bad input is
-// an InputError naming the file, the line:column or byte offset, and the problem.
+// Reading meshes: STL (ASCII and binary), OBJ, PLY (ASCII, binary little/big endian), OFF and 3MF,
+// with the format detected from the content (docs/formats.md). Vertices are kept as given (no
+// welding; STL gives three fresh vertices per facet) and faces as polygons (no triangulation). Bad
+// input is an InputError naming the file, the line:column or byte offset, and the problem.
 #pragma once
 
 #include <span>
@@ -31,10 +31,11 @@ Mesh read_mesh(const MappedFile& file, MeshSource* source = nullptr,
 Mesh read_mesh_bytes(std::span<const char> bytes, const std::string& name,
                      MeshSource* source = nullptr, MeshFormat format = MeshFormat::unknown);
 
-// The format of `bytes` by content: binary STL by size arithmetic (84 + 50 × count == size, even
-// when the header begins with "solid"), "ply" + format line, an OFF keyword, "solid" for ASCII STL,
-// OBJ statements; an unrecognised binary file is reported as a (broken) binary STL so that its
-// reader explains the size mismatch. unknown for empty or unrecognised text.
+// The format of `bytes` by content: 3MF by the zip header "PK\3\4", binary STL by size arithmetic
+// (84 + 50 × count == size, even when the header begins with "solid"), "ply" + format line, an OFF
+// keyword, "solid" for ASCII STL, OBJ statements; an unrecognised binary file is reported as a
+// (broken) binary STL so that its reader explains the size mismatch. unknown for empty or
+// unrecognised text.
 MeshFormat detect_format(std::span<const char> bytes);
 
 }  // namespace pgamesh

@@ -20,9 +20,11 @@ struct WriteOptions {
 };
 
 // The bytes of `mesh` in `format` (stl_ascii, stl_binary, obj, ply_ascii, ply_binary_le,
-// ply_binary_be, off). STL holds triangles only: a polygon with n > 3 corners is written as the
-// fan (v0, vi, vi+1), which keeps its vector area and the signed volume it bounds exactly. Throws
-// std::invalid_argument for MeshFormat::unknown or corner indices outside the vertex array.
+// ply_binary_be, off, threemf). STL and 3MF hold triangles only: a polygon with n > 3 corners is
+// written as the fan (v0, vi, vi+1), which keeps its vector area and the signed volume it bounds
+// exactly. 3MF is a zip package of one object and one build item, in options.unit (millimeter,
+// the 3MF default, when unspecified). Throws std::invalid_argument for MeshFormat::unknown, corner
+// indices outside the vertex array, and (3MF) a triangle that repeats a vertex.
 std::string write_mesh_bytes(const Mesh& mesh, MeshFormat format, const WriteOptions& options = {});
 
 // Writes write_mesh_bytes(mesh, format, options) to `path` atomically (write_file_atomically:
