@@ -40,6 +40,12 @@ const char* format_name(MeshFormat f) {
       return "ply-binary-big-endian";
     case MeshFormat::off:
       return "off";
+    case MeshFormat::gltf:
+      return "gltf";
+    case MeshFormat::glb:
+      return "glb";
+    case MeshFormat::slp:
+      return "slp";
     case MeshFormat::unknown:
       break;
   }
@@ -57,6 +63,9 @@ MeshFormat format_from_name(std::string_view name) {
   if (n == "ply-binary-big-endian" || n == "ply-be" || n == "ply_binary_be")
     return MeshFormat::ply_binary_be;
   if (n == "off") return MeshFormat::off;
+  if (n == "gltf") return MeshFormat::gltf;
+  if (n == "glb") return MeshFormat::glb;
+  if (n == "slp") return MeshFormat::slp;
   return MeshFormat::unknown;
 }
 
@@ -68,6 +77,9 @@ MeshFormat format_for_extension(std::string_view path, MeshFormat preferred) {
   if (ext == "ply") return is_ply(preferred) ? preferred : MeshFormat::ply_binary_le;
   if (ext == "obj") return MeshFormat::obj;
   if (ext == "off") return MeshFormat::off;
+  if (ext == "gltf") return MeshFormat::gltf;
+  if (ext == "glb") return MeshFormat::glb;
+  if (ext == "slp") return MeshFormat::slp;
   return MeshFormat::unknown;
 }
 

@@ -7,6 +7,7 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "io/write_gltf.hpp"
 #include "pgamesh/io/write_file.hpp"
 
 namespace pgamesh {
@@ -235,6 +236,11 @@ std::string write_mesh_bytes(const Mesh& mesh, MeshFormat format, const WriteOpt
       return ply(mesh, format, options);
     case MeshFormat::off:
       return off(mesh);
+    case MeshFormat::gltf:
+    case MeshFormat::glb:
+      return detail::write_gltf(mesh, format == MeshFormat::glb);
+    case MeshFormat::slp:  // an SLP without colours is ASCII STL text
+      return stl_ascii(mesh, options);
     case MeshFormat::unknown:
       break;
   }

@@ -20,13 +20,18 @@ struct AnalysisOptions {
   bool topology = true;  // false: no weld and edge pass (closedness is then unknown)
   TopologyOptions topology_options;
   MeshFormat format = MeshFormat::unknown;  // forced reader family (unknown: from the content)
+  // The unit of a file that states none (--unit). A file that states its unit (3MF, glTF) and a
+  // different one here is refused (std::invalid_argument): convert it with `pgamesh convert`.
+  LengthUnit unit = LengthUnit::unspecified;
 };
 
 struct Analysis {
   std::string file;
   MeshFormat format = MeshFormat::unknown;
-  bool single_precision = false;  // the coordinates were float32 (binary STL, float PLY)
-  bool streamed = false;          // accumulated straight from the file, no Mesh built
+  bool single_precision = false;  // the coordinates were float32 (binary STL, float PLY, glTF)
+  // The unit of the figures: the file's own (3MF, glTF), else AnalysisOptions::unit.
+  LengthUnit unit = LengthUnit::unspecified;
+  bool streamed = false;  // accumulated straight from the file, no Mesh built
   MassProperties mass;
   std::optional<TopologyReport> topology;  // absent when not requested
   // Whether the volume, centre of mass and inertia describe a solid: false for an open,

@@ -20,7 +20,10 @@ enum class MeshFormat {
   ply_ascii,
   ply_binary_le,
   ply_binary_be,
-  off
+  off,
+  gltf,  // glTF 2.0 JSON (.gltf)
+  glb,   // glTF 2.0 binary container (.glb)
+  slp    // Pro/ENGINEER render file: ASCII STL with colours and vertex normals
 };
 
 struct Mesh {
@@ -51,8 +54,8 @@ struct MeshPart {
 struct MeshSource {
   std::string path;
   MeshFormat format = MeshFormat::unknown;
-  bool single_precision = false;              // coordinates were float32 (binary STL, float PLY)
-  std::uint64_t groups = 0;                   // OBJ g/o statements (ignored, counted)
+  bool single_precision = false;  // coordinates were float32 (binary STL, float PLY, glTF)
+  std::uint64_t groups = 0;       // OBJ g/o statements (ignored, counted)
   LengthUnit unit = LengthUnit::unspecified;  // the file's own unit, if it states one
   std::vector<MeshPart> parts;                // empty for formats of one object
   std::vector<std::string> warnings;

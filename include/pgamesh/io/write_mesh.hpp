@@ -20,8 +20,11 @@ struct WriteOptions {
 };
 
 // The bytes of `mesh` in `format` (stl_ascii, stl_binary, obj, ply_ascii, ply_binary_le,
-// ply_binary_be, off). STL holds triangles only: a polygon with n > 3 corners is written as the
-// fan (v0, vi, vi+1), which keeps its vector area and the signed volume it bounds exactly. Throws
+// ply_binary_be, off, gltf, glb, slp). STL, SLP and glTF hold triangles only: a polygon with n > 3
+// corners is written as the fan (v0, vi, vi+1), which keeps its vector area and the signed volume
+// it bounds exactly. glTF (a .gltf text with its buffer in a base64 data: URI, or a .glb) stores
+// float32 positions, as binary STL does; its unit is the metre by definition, so `mesh` must be in
+// metres (pgamesh convert rescales). SLP is written as ASCII STL text (no colours). Throws
 // std::invalid_argument for MeshFormat::unknown or corner indices outside the vertex array.
 std::string write_mesh_bytes(const Mesh& mesh, MeshFormat format, const WriteOptions& options = {});
 
