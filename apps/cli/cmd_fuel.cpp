@@ -35,6 +35,7 @@ namespace {
 
 struct Options {
   std::string file;
+  LengthUnit unit = LengthUnit::unspecified;  // --unit: of a file that states none
   Vec3d up{0, 0, 1};
   bool up_given = false;
   std::vector<double> pitch{0}, roll{0};
@@ -129,6 +130,7 @@ void write_header(Json& w, const Options& o, const Analysis& analysis, const Mes
                   const tank::Tank& t, const TankCheck& check, double density) {
   w["file"] = o.file;
   w["format"] = format_name(analysis.format);
+  w["unit"] = unit_name(analysis.unit);
   w["triangles"] = t.triangles.size();
   w["faces"] = mesh.face_count();
   w["tank_volume"] = json_number(t.volume);
@@ -209,6 +211,7 @@ int run(const Options& o) {
   // is tank::tank_fitness's rule below.
   AnalysisOptions analysis_options;
   analysis_options.topology = false;
+  analysis_options.unit = o.unit;
   const Analysis analysis = analyze_mesh(mesh, source, analysis_options);
   tank::Tank t;
   try {
@@ -241,8 +244,8 @@ int run(const Options& o) {
            "forward, y left, z up); ullage_length = highest point - level\n"
            "# units: lengths in the mesh unit L, areas L^2, volumes L^3, moments of area "
            "L^4; mass = density x volume in the unit of the density times L^3\n"
-           "# density %.17g\n# tank_volume %.17g\n",
-           o.file.c_str(), density, t.volume);
+           "# unit %s\n# density %.17g\n# tank_volume %.17g\n",
+           o.file.c_str(), unit_name(analysis.unit), density, t.volume);
     // A forced table says so inside the file, where it travels with the figures.
     for (const auto& problem : check.problems)
       append(out, "# warning: forced (--force), not a valid tank: %s\n", problem.c_str());
@@ -397,6 +400,9 @@ void add_fuel_command(CLI::App& app) {
   auto a = std::make_shared<FuelArgs>();
   Options& o = a->o;
   add_file(*sub, o.file, "the tank mesh file");
+  add_unit(*sub, o.unit,
+           "the unit of a file that states none: mm, cm, m, in, ft, um\n"
+           "(named in the output; a file's own unit differing from U is an error)");
   const std::string queries = "queries (one of)", attitude = "attitude (tank frame)",
                     mass = "mass (as in pgamesh props)", output = "output";
   add_number(*sub, "--level", a->level, "the fuel below level H")->type_name("H")->group(queries);
