@@ -181,7 +181,7 @@ class GltfReader {
   std::span<const char> buffer_view(std::size_t index, std::size_t* stride);
   AccessorView accessor(std::size_t index);
   AccessorView position_accessor(std::size_t index);
-  void positions(const AccessorView& a, const Affine& world, Vec3d* out) const;
+  void positions(const AccessorView& a, const Affine& world, std::vector<Vec3d>& vertices) const;
   void indices(std::size_t index, std::uint64_t vertex_count, std::vector<std::uint32_t>& out);
   Affine local_transform(std::size_t node) const;
   void add_instance(std::size_t node, std::size_t mesh_index, const Affine& world, Mesh& mesh,
@@ -505,8 +505,11 @@ AccessorView GltfReader::position_accessor(std::size_t index) {
   return a;
 }
 
-// The accessor's positions placed by `world`, written to out[0, a.count).
-void GltfReader::positions(const AccessorView& a, const Affine& world, Vec3d* out) const {
+// The accessor's positions placed by `world`, appended to `vertices` (its capacity reserved: no
+// zero-filling pass before the values, which on a large mesh costs as much as the values).
+void GltfReader::positions(const AccessorView& a, const Affine& world,
+                           std::vector<Vec3d>& vertices) const {
+  const std::size_t base = vertices.size();
   if (a.data && a.component_type == 5126) {
     // The common case straight from the file's bytes: float32 to double is exact.
     for (std::uint64_t i = 0; i < a.count; ++i) {
@@ -515,11 +518,13 @@ void GltfReader::positions(const AccessorView& a, const Affine& world, Vec3d* ou
       if constexpr (std::endian::native == std::endian::big)
         for (float& x : f)
           x = std::bit_cast<float>(__builtin_bswap32(std::bit_cast<std::uint32_t>(x)));
-      out[i] = {f[0], f[1], f[2]};
+      vertices.push_back({f[0], f[1], f[2]});
     }
   } else {
-    for (std::uint64_t i = 0; i < a.count; ++i) out[i] = {a.get(i, 0), a.get(i, 1), a.get(i, 2)};
+    for (std::uint64_t i = 0; i < a.count; ++i)
+      vertices.push_back({a.get(i, 0), a.get(i, 1), a.get(i, 2)});
   }
+  Vec3d* out = vertices.data() + base;
   const std::size_t cb = component_bytes(a.component_type);
   for (std::size_t k = 0; k < a.sparse_indices.size(); ++k) {
     const char* p = a.sparse_values + k * 3 * cb;
@@ -545,11 +550,13 @@ void GltfReader::indices(std::size_t index, std::uint64_t vertex_count,
     fail(a.path + ".componentType",
          std::to_string(a.component_type) + " (indices must be 5121, 5123 or 5125)");
   if (a.normalized) fail(a.path + ".normalized", "indices cannot be normalized");
-  out.resize(a.count);
+  out.clear();
+  out.reserve(a.count);
   if (a.data && a.component_type == 5125)
-    for (std::uint64_t i = 0; i < a.count; ++i) out[i] = le32(a.data + i * a.stride);
-  else if (a.data)
-    for (std::uint64_t i = 0; i < a.count; ++i) out[i] = static_cast<std::uint32_t>(a.get(i, 0));
+    for (std::uint64_t i = 0; i < a.count; ++i) out.push_back(le32(a.data + i * a.stride));
+  else
+    for (std::uint64_t i = 0; i < a.count; ++i)
+      out.push_back(static_cast<std::uint32_t>(a.get(i, 0)));
   for (std::size_t k = 0; k < a.sparse_indices.size(); ++k)
     out[a.sparse_indices[k]] = static_cast<std::uint32_t>(component(
         a.sparse_values + k * component_bytes(a.component_type), a.component_type, false));
@@ -670,8 +677,7 @@ void GltfReader::add_instance(std::size_t node, std::size_t mesh_index, const Af
                       std::to_string(max_output) + ", 16 per byte of input)");
     // Geometric growth: a mesh instanced many times must not be copied at every instance.
     grow(mesh.vertices, base + pa.count);
-    mesh.vertices.resize(base + pa.count);
-    positions(pa, world, mesh.vertices.data() + base);
+    positions(pa, world, mesh.vertices);
     grow(mesh.corners, corners);
     grow(mesh.face_offsets, mesh.face_offsets.size() + idx.size() / 3 + idx.size());
     auto triangle = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
@@ -684,16 +690,14 @@ void GltfReader::add_instance(std::size_t node, std::size_t mesh_index, const Af
       if (idx.size() % 3)
         fail(ppath, std::to_string(idx.size()) + " vertices: TRIANGLES needs a multiple of 3");
       // The common case in one pass over flat arrays.
-      const std::size_t c0 = mesh.corners.size(), f0 = mesh.face_offsets.size();
-      mesh.corners.resize(c0 + idx.size());
-      mesh.face_offsets.resize(f0 + idx.size() / 3);
-      std::uint32_t* c = mesh.corners.data() + c0;
+      const std::size_t c0 = mesh.corners.size();
       const auto o = static_cast<std::uint32_t>(base);
+      const std::size_t second = mirrored ? 2 : 1, third = mirrored ? 1 : 2;
       for (std::size_t i = 0; i < idx.size(); i += 3) {
-        c[i] = idx[i] + o;
-        c[i + 1] = idx[i + (mirrored ? 2 : 1)] + o;
-        c[i + 2] = idx[i + (mirrored ? 1 : 2)] + o;
-        mesh.face_offsets[f0 + i / 3] = static_cast<std::uint32_t>(c0 + i + 3);
+        mesh.corners.push_back(idx[i] + o);
+        mesh.corners.push_back(idx[i + second] + o);
+        mesh.corners.push_back(idx[i + third] + o);
+        mesh.face_offsets.push_back(static_cast<std::uint32_t>(c0 + i + 3));
       }
     } else if (mode == 5) {
       // Strip: triangle i is (i, i+1+i%2, i+2−i%2) (glTF 2.0 §3.7.2.1); the degenerate
