@@ -214,6 +214,8 @@ Analysis analyze(std::span<const char> bytes, const std::string& name,
       source.path = name;
       MassProperties mass =
           ascii_stl_mass_properties(bytes, name, source, options.mass, release_records);
+      // An ASCII STL named .slp is an SLP without colours, as read_mesh_bytes names it.
+      if (format_for_extension(name) == MeshFormat::slp) source.format = MeshFormat::slp;
       Analysis r = mass_report(std::move(mass), source, options);
       r.streamed = true;
       judge(r);

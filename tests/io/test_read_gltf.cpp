@@ -237,6 +237,30 @@ TEST(ReadGltf, StripsAndFansFollowTheSpecificationsWinding) {
   EXPECT_NE(src.warnings[0].find("2 primitives of points or lines"), std::string::npos);
 }
 
+TEST(ReadGltf, QuantizedPositionsNeedTheirExtension) {
+  // The square's positions as int16 (5122): as integers, and normalized (c / 32767), under
+  // KHR_mesh_quantization only.
+  GltfJson doc = square_document(4, {0, 1, 2});
+  GltfBlob blob;
+  for (std::int16_t c : {0, 0, 0, 0, 32767, 0, 0, 0, -32767, 0, 32767, 0, 0, 0, 0, 0}) blob.put(c);
+  doc["buffers"].push_back(
+      {{"byteLength", blob.bytes.size()},
+       {"uri", "data:application/octet-stream;base64," + gltf_test_base64(blob.bytes)}});
+  doc["bufferViews"].push_back({{"buffer", 1}, {"byteLength", 32}, {"byteStride", 8}});
+  doc["accessors"][0] = {
+      {"bufferView", 1}, {"componentType", 5122}, {"count", 4}, {"type", "VEC3"}};
+  EXPECT_NE(gltf_error(doc).find("KHR_mesh_quantization"), std::string::npos);
+  doc["extensionsUsed"] = {"KHR_mesh_quantization"};
+  Mesh m = read_gltf_text(doc);
+  ASSERT_EQ(m.vertices.size(), 4u);
+  EXPECT_EQ(m.vertices[1], (Vec3d{32767, 0, 0}));
+  EXPECT_EQ(m.vertices[2], (Vec3d{-32767, 0, 32767}));
+  doc["accessors"][0]["normalized"] = true;
+  m = read_gltf_text(doc);
+  EXPECT_EQ(m.vertices[1], (Vec3d{1, 0, 0}));
+  EXPECT_EQ(m.vertices[2], (Vec3d{-1, 0, 1}));
+}
+
 TEST(ReadGltf, SparseAccessorReplacesTheListedElements) {
   GltfJson doc = square_document(4, {0, 1, 2});
   // Vertex 2 replaced by (2, 3, 4): indices (uint8 2) and values in a second buffer.

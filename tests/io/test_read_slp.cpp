@@ -54,6 +54,11 @@ TEST(ReadSlp, TheSlpExtensionNamesAnStlLikeFile) {
   read_mesh(file.path(), &source);
   EXPECT_EQ(source.format, MeshFormat::slp);
   EXPECT_EQ(format_for_extension("part.SLP"), MeshFormat::slp);
+  AnalysisOptions streamed;  // the summing path of props --no-topology names it so too
+  streamed.topology = false;
+  const Analysis fast = analyze_file(file.path(), streamed);
+  EXPECT_EQ(fast.format, MeshFormat::slp);
+  EXPECT_DOUBLE_EQ(fast.mass.volume, 1.0 / 6.0);
   const test::TempFile coloured(".slp", slp_tetrahedron(true));
   EXPECT_DOUBLE_EQ(analyze_file(coloured.path()).mass.volume, 1.0 / 6.0);
 }
