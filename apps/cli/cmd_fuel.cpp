@@ -263,11 +263,12 @@ int run(const Options& o) {
     write_attitude(w, o, a);
     if (!o.json && !o.csv)
       append(
-          out, "%s: up %s %s %s%s\n", o.file.c_str(), fmt(a.up.x).c_str(), fmt(a.up.y).c_str(),
-          fmt(a.up.z).c_str(),
+          out, "%s: up %s %s %s%s, lengths in %s\n", o.file.c_str(), fmt(a.up.x).c_str(),
+          fmt(a.up.y).c_str(), fmt(a.up.z).c_str(),
           o.attitude
               ? (" (pitch " + fmt(a.pitch_deg) + " deg, roll " + fmt(a.roll_deg) + " deg)").c_str()
-              : "");
+              : "",
+          unit_name(analysis.unit));
     switch (o.query) {
       case Options::Query::level: {
         if (o.value < range.lowest || o.value > range.highest) {
