@@ -17,7 +17,7 @@
 namespace pgamesh::test {
 namespace {
 
-std::string quoted(const std::string& path) {
+std::string shell_quoted(const std::string& path) {
   return "\"" + path + "\"";
 }
 
@@ -52,7 +52,8 @@ TEST(ConvertCli, EveryFormatGivesTheSameMassPropertiesBitForBit) {
   for (const char* ext : {".stl", ".obj", ".ply", ".off", ".gltf", ".glb", ".slp"}) {
     SCOPED_TRACE(ext);
     const TempFile out(ext);
-    const CliRun r = run_cli("convert " + quoted(input.path()) + " " + quoted(out.path()));
+    const CliRun r =
+        run_cli("convert " + shell_quoted(input.path()) + " " + shell_quoted(out.path()));
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_NE(r.out.find("wrote " + out.path()), std::string::npos) << r.out;
     expect_same_mass_properties(analyze_file(out.path()), want);
@@ -60,8 +61,8 @@ TEST(ConvertCli, EveryFormatGivesTheSameMassPropertiesBitForBit) {
   for (const char* format : {"stl-ascii", "ply-be", "ply"}) {
     SCOPED_TRACE(format);
     const TempFile out(".mesh");
-    const CliRun r = run_cli("convert " + quoted(input.path()) + " " + quoted(out.path()) +
-                             " --format " + format);
+    const CliRun r = run_cli("convert " + shell_quoted(input.path()) + " " +
+                             shell_quoted(out.path()) + " --format " + format);
     ASSERT_EQ(r.status, 0) << r.err;
     expect_same_mass_properties(analyze_file(out.path()), want);
   }
@@ -73,12 +74,15 @@ TEST(ConvertCli, DoubleFormatsKeepCoordinatesThatFloat32WouldRound) {
   for (const char* ext : {".obj", ".ply", ".off"}) {
     SCOPED_TRACE(ext);
     const TempFile out(ext);
-    ASSERT_EQ(run_cli("convert " + quoted(input.path()) + " " + quoted(out.path())).status, 0);
+    ASSERT_EQ(
+        run_cli("convert " + shell_quoted(input.path()) + " " + shell_quoted(out.path())).status,
+        0);
     EXPECT_EQ(read_mesh(out.path()).vertices, want.vertices);
   }
   // glTF stores float32: the coordinates come back rounded, as documented.
   const TempFile gltf(".gltf");
-  ASSERT_EQ(run_cli("convert " + quoted(input.path()) + " " + quoted(gltf.path())).status, 0);
+  ASSERT_EQ(
+      run_cli("convert " + shell_quoted(input.path()) + " " + shell_quoted(gltf.path())).status, 0);
   const Mesh back = read_mesh(gltf.path());
   ASSERT_EQ(back.vertices.size(), want.vertices.size());
   EXPECT_EQ(back.vertices[0].x, static_cast<double>(static_cast<float>(want.vertices[0].x)));
@@ -88,8 +92,8 @@ TEST(ConvertCli, UnitsAreConvertedByTheExactFactorAndSaidSo) {
   const TempFile input(".obj", float_box_obj());
   const TempFile metres(".glb");
   // A unitless file said to be in millimetres, written as glTF: metres by definition.
-  CliRun r =
-      run_cli("convert " + quoted(input.path()) + " " + quoted(metres.path()) + " --unit mm");
+  CliRun r = run_cli("convert " + shell_quoted(input.path()) + " " + shell_quoted(metres.path()) +
+                     " --unit mm");
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("from mm to m"), std::string::npos) << r.out;
   MeshSource source;
@@ -98,7 +102,8 @@ TEST(ConvertCli, UnitsAreConvertedByTheExactFactorAndSaidSo) {
   EXPECT_EQ(in_metres.vertices[1].x, static_cast<double>(static_cast<float>(3 * 1e-3)));
   // Back from metres to millimetres: the factor 1 / 1e-3 = 1000.
   const TempFile mm(".obj");
-  r = run_cli("convert " + quoted(metres.path()) + " " + quoted(mm.path()) + " --unit mm");
+  r = run_cli("convert " + shell_quoted(metres.path()) + " " + shell_quoted(mm.path()) +
+              " --unit mm");
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("scaled the coordinates by 1000 from m to mm"), std::string::npos) << r.out;
   EXPECT_EQ(read_mesh(mm.path()).vertices[1].x,
@@ -107,12 +112,12 @@ TEST(ConvertCli, UnitsAreConvertedByTheExactFactorAndSaidSo) {
 
 TEST(ConvertCli, ErrorsNameTheFile) {
   const TempFile input(".obj", float_box_obj());
-  CliRun r = run_cli("convert " + quoted(input.path()) + " out.unknown-extension");
+  CliRun r = run_cli("convert " + shell_quoted(input.path()) + " out.unknown-extension");
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("out.unknown-extension"), std::string::npos) << r.err;
   const TempFile broken(".gltf", "{\"asset\": {\"version\": \"2.0\"}, \"nodes\": [{\"mesh\": 4}]}");
   const TempFile out(".obj");
-  r = run_cli("convert " + quoted(broken.path()) + " " + quoted(out.path()));
+  r = run_cli("convert " + shell_quoted(broken.path()) + " " + shell_quoted(out.path()));
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.err.find(broken.path()), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("nodes[0].mesh"), std::string::npos) << r.err;
@@ -122,26 +127,27 @@ TEST(ConvertCli, ErrorsNameTheFile) {
 
 TEST(UnitsCli, OutputsNameTheUnitOrSayUnitless) {
   const TempFile cube(".obj", cube_obj(10));
-  CliRun r = run_cli("props " + quoted(cube.path()) + " --json");
+  CliRun r = run_cli("props " + shell_quoted(cube.path()) + " --json");
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(parse_json(r.out)["unit"], "unitless");
-  r = run_cli("props " + quoted(cube.path()) + " --json --unit mm");
+  r = run_cli("props " + shell_quoted(cube.path()) + " --json --unit mm");
   EXPECT_EQ(parse_json(r.out)["unit"], "mm");
-  r = run_cli("props " + quoted(cube.path()) + " --unit mm");
+  r = run_cli("props " + shell_quoted(cube.path()) + " --unit mm");
   EXPECT_NE(r.out.find("volume            1000 mm^3"), std::string::npos) << r.out;
-  r = run_cli("check " + quoted(cube.path()) + " --json --unit in");
+  r = run_cli("check " + shell_quoted(cube.path()) + " --json --unit in");
   EXPECT_EQ(parse_json(r.out)["unit"], "in");
   // A glTF states metres: another --unit is refused, naming the file.
   const TempFile gltf(".gltf");
-  ASSERT_EQ(
-      run_cli("convert " + quoted(cube.path()) + " " + quoted(gltf.path()) + " --unit m").status,
-      0);
-  r = run_cli("props " + quoted(gltf.path()) + " --json");
+  ASSERT_EQ(run_cli("convert " + shell_quoted(cube.path()) + " " + shell_quoted(gltf.path()) +
+                    " --unit m")
+                .status,
+            0);
+  r = run_cli("props " + shell_quoted(gltf.path()) + " --json");
   EXPECT_EQ(parse_json(r.out)["unit"], "m");
-  r = run_cli("props " + quoted(gltf.path()) + " --unit mm");
+  r = run_cli("props " + shell_quoted(gltf.path()) + " --unit mm");
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.err.find(gltf.path()), std::string::npos) << r.err;
-  EXPECT_EQ(run_cli("props " + quoted(cube.path()) + " --unit furlong").status, 2);
+  EXPECT_EQ(run_cli("props " + shell_quoted(cube.path()) + " --unit furlong").status, 2);
 }
 
 // The value after `key` (an attribute key=" or an element <key>) in `xml`.
@@ -164,7 +170,7 @@ TEST(ExportsCli, SiFiguresOfAMillimetreCubeMatchTheClosedForm) {
   for (const auto& [file, unit] : {std::pair{&mm, "mm"}, std::pair{&m, "m"}}) {
     SCOPED_TRACE(unit);
     const std::string args =
-        "props " + quoted(file->path()) + " --density 1000 --unit " + std::string(unit);
+        "props " + shell_quoted(file->path()) + " --density 1000 --unit " + std::string(unit);
     const CliRun sdf = run_cli(args + " --sdf");
     ASSERT_EQ(sdf.status, 0) << sdf.err;
     EXPECT_NE(sdf.out.find("<sdf version=\"1.7\">"), std::string::npos);
@@ -194,7 +200,7 @@ TEST(ExportsCli, SiFiguresOfAMillimetreCubeMatchTheClosedForm) {
     EXPECT_EQ(sdf.err.find("assume"), std::string::npos) << sdf.err;
   }
   // Without a unit: metres are assumed, with a warning.
-  const CliRun r = run_cli("props " + quoted(m.path()) + " --density 1000 --sdf");
+  const CliRun r = run_cli("props " + shell_quoted(m.path()) + " --density 1000 --sdf");
   ASSERT_EQ(r.status, 0);
   EXPECT_NE(r.err.find("assume metres"), std::string::npos) << r.err;
   EXPECT_NEAR(xml_value(r.out, "<mass>"), mass, 1e-13 * mass);
