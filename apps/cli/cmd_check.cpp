@@ -38,7 +38,8 @@ std::string readable_report(const Mesh& mesh, const MeshSource& source, const An
                             const OrientationFix* fix, std::size_t cap) {
   std::string out;
   const TopologyReport& r = *analysis.topology;
-  append(out, "%s (%s)\n", source.path.c_str(), format_name(source.format));
+  append(out, "%s (%s, %s)\n", source.path.c_str(), format_name(source.format),
+         unit_name(analysis.unit));
   append(out, "  faces               %zu (%zu triangles)\n", r.faces, r.triangles);
   append(out, "  vertices            %zu welded from %zu (%zu merged", r.vertices, r.input_vertices,
          r.merged_vertices);
@@ -140,6 +141,7 @@ struct CheckOptions {
   TopologyOptions topology;
   unsigned long long list_cap = TopologyOptions{}.list_cap;
   MeshFormat forced = MeshFormat::unknown;
+  LengthUnit unit = LengthUnit::unspecified;  // --unit: of a file that states none
 };
 
 int run_check(const CheckOptions& o) {
@@ -163,14 +165,15 @@ int run_check(const CheckOptions& o) {
     // warnings: the same as `pgamesh props`).
     AnalysisOptions analysis_options;
     analysis_options.topology_options = options;
+    analysis_options.unit = o.unit;
     const Analysis analysis = analyze_mesh(mesh, source, analysis_options);
     const MeshFormat output_format =
         output.empty() ? MeshFormat::unknown : format_for_extension(output, source.format);
     if (!output.empty()) {
       if (output_format == MeshFormat::unknown) {
         std::fprintf(stderr,
-                     "pgamesh check: cannot tell the format of '%s' (use .stl, .obj, .ply or "
-                     ".off)\n",
+                     "pgamesh check: cannot tell the format of '%s' (use .stl, .obj, .ply, "
+                     ".off, .gltf, .glb or .slp)\n",
                      output.c_str());
         return 2;
       }
@@ -236,9 +239,12 @@ void add_check_command(CLI::App& app) {
   sub->add_option("-o,--output", o->output,
                   "write the mesh as analysed: welded (within --weld-tolerance),\n"
                   "and reoriented with --fix-orientation (format from OUT's\n"
-                  "extension: .stl .obj .ply .off)")
+                  "extension: .stl .obj .ply .off .3mf .gltf .glb .slp)")
       ->type_name("OUT");
   add_format(*sub, o->forced);
+  add_unit(*sub, o->unit,
+           "the unit of a file that states none: mm, cm, m, in, ft, um\n"
+           "(named in the output; a file's own unit differing from U is an error)");
   on_run(*sub, [o] { return run_check(*o); });
 }
 

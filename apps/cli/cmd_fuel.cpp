@@ -36,6 +36,7 @@ namespace {
 
 struct Options {
   std::string file;
+  LengthUnit unit = LengthUnit::unspecified;  // --unit: of a file that states none
   Vec3d up{0, 0, 1};
   bool up_given = false;
   std::vector<double> pitch{0}, roll{0};
@@ -138,6 +139,7 @@ void write_header(Json& w, const Options& o, const Analysis& analysis, const Gau
                   const tank::Tank& t, const TankCheck& check, double density) {
   w["file"] = o.file;
   w["format"] = format_name(analysis.format);
+  w["unit"] = unit_name(analysis.unit);
   w["triangles"] = t.triangles.size();
   w["faces"] = gauged.mesh.face_count();
   w["weld"] = Json{{"tolerance", json_number(o.weld_tolerance)},
@@ -229,6 +231,7 @@ int run(const Options& o) {
   // is tank::tank_fitness's rule below.
   AnalysisOptions analysis_options;
   analysis_options.topology = false;
+  analysis_options.unit = o.unit;
   const Analysis analysis = analyze_mesh(mesh, source, analysis_options);
   tank::Tank t;
   try {
@@ -261,8 +264,8 @@ int run(const Options& o) {
            "forward, y left, z up); ullage_length = highest point - level\n"
            "# units: lengths in the mesh unit L, areas L^2, volumes L^3, moments of area "
            "L^4; mass = density x volume in the unit of the density times L^3\n"
-           "# density %.17g\n# tank_volume %.17g\n",
-           o.file.c_str(), density, t.volume);
+           "# unit %s\n# density %.17g\n# tank_volume %.17g\n",
+           o.file.c_str(), unit_name(analysis.unit), density, t.volume);
     if (o.weld_tolerance > 0)
       append(out, "# weld_tolerance %.17g merged %zu max_moved %.17g\n", o.weld_tolerance,
              gauged.weld.merged, gauged.weld.max_moved);
@@ -286,11 +289,12 @@ int run(const Options& o) {
     write_attitude(w, o, a);
     if (!o.json && !o.csv)
       append(
-          out, "%s: up %s %s %s%s\n", o.file.c_str(), fmt(a.up.x).c_str(), fmt(a.up.y).c_str(),
-          fmt(a.up.z).c_str(),
+          out, "%s: up %s %s %s%s, lengths in %s\n", o.file.c_str(), fmt(a.up.x).c_str(),
+          fmt(a.up.y).c_str(), fmt(a.up.z).c_str(),
           o.attitude
               ? (" (pitch " + fmt(a.pitch_deg) + " deg, roll " + fmt(a.roll_deg) + " deg)").c_str()
-              : "");
+              : "",
+          unit_name(analysis.unit));
     switch (o.query) {
       case Options::Query::level: {
         if (o.value < range.lowest || o.value > range.highest) {
@@ -423,6 +427,9 @@ void add_fuel_command(CLI::App& app) {
   auto a = std::make_shared<FuelArgs>();
   Options& o = a->o;
   add_file(*sub, o.file, "the tank mesh file");
+  add_unit(*sub, o.unit,
+           "the unit of a file that states none: mm, cm, m, in, ft, um\n"
+           "(named in the output; a file's own unit differing from U is an error)");
   const std::string queries = "queries (one of)", attitude = "attitude (tank frame)",
                     mass = "mass (as in pgamesh props)", output = "output";
   add_number(*sub, "--level", a->level, "the fuel below level H")->type_name("H")->group(queries);

@@ -43,6 +43,7 @@ void add_props_command(CLI::App& app);    // cmd_props.cpp
 void add_check_command(CLI::App& app);    // cmd_check.cpp
 void add_repair_command(CLI::App& app);   // cmd_repair.cpp
 void add_fuel_command(CLI::App& app);     // cmd_fuel.cpp
+void add_convert_command(CLI::App& app);  // cmd_convert.cpp
 void add_cga_command(CLI::App& app);      // cmd_cga.cpp
 void add_quadric_command(CLI::App& app);  // cmd_quadric.cpp
 void add_fit_command(CLI::App& app);      // cmd_fit.cpp
@@ -97,8 +98,11 @@ CLI::Option* add_numbers(CLI::App& sub, const std::string& name, std::vector<dou
                          const std::string& description, std::size_t size = 0);
 CLI::Option* add_vec3(CLI::App& sub, const std::string& name, Vec3d& out,
                       const std::string& description);
-// --format F: stl, obj, ply, off, 3mf or auto (MeshFormat::unknown: from the content).
+// --format F: stl, obj, ply, off, 3mf, gltf, glb, slp or auto (MeshFormat::unknown: from the
+// content).
 CLI::Option* add_format(CLI::App& sub, MeshFormat& out);
+// --unit U: mm, cm, m, in, ft or um (units.hpp, unit_from_name).
+CLI::Option* add_unit(CLI::App& sub, LengthUnit& out, const std::string& description);
 
 // ---- commands that parse their own argv (calc) --------------------------------------------------
 

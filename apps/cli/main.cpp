@@ -82,6 +82,7 @@ int main(int argc, char** argv) {
   add_check_command(app);
   add_repair_command(app);
   add_fuel_command(app);
+  add_convert_command(app);
   add_cga_command(app);
   add_quadric_command(app);
   add_fit_command(app);

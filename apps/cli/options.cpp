@@ -190,11 +190,28 @@ CLI::Option* add_format(CLI::App& sub, MeshFormat& out) {
             }
             out = format_from_name(name);
             if (out == MeshFormat::unknown)
-              throw CLI::ValidationError(
-                  "--format", "unknown format '" + name + "' (stl, obj, ply, off, 3mf or auto)");
+              throw CLI::ValidationError("--format", "unknown format '" + name +
+                                                         "' (stl, obj, ply, off, 3mf, gltf, glb, "
+                                                         "slp or auto)");
           },
-          "read FILE as F: stl, obj, ply, off, 3mf (default auto: from the content)")
+          "read FILE as F: stl, obj, ply, off, 3mf, gltf, glb, slp (default\nauto: from the "
+          "content)")
       ->type_name("F");
+}
+
+CLI::Option* add_unit(CLI::App& sub, LengthUnit& out, const std::string& description) {
+  return sub
+      .add_option_function<std::string>(
+          "--unit",
+          [&out](const std::string& name) {
+            const auto u = unit_from_name(name);
+            if (!u)
+              throw CLI::ValidationError("--unit",
+                                         "unknown unit '" + name + "' (mm, cm, m, in, ft, um)");
+            out = *u;
+          },
+          description)
+      ->type_name("U");
 }
 
 }  // namespace pgamesh::cli

@@ -46,6 +46,7 @@ Json check_fields(const Mesh& mesh, const MeshSource& source, const Analysis& an
   Json j;
   j["file"] = source.path;
   j["format"] = format_name(source.format);
+  j["unit"] = unit_name(analysis.unit);
   // The summary fields shared with `pgamesh props`.
   j["triangles"] = r.triangles;
   j["faces"] = r.faces;

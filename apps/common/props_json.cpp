@@ -82,6 +82,7 @@ std::string props_json(const Analysis& r) {
   // Additions.
   j["file"] = r.file;
   j["format"] = format_name(r.format);
+  j["unit"] = unit_name(r.unit);
   j["single_precision"] = r.single_precision;
   j["streamed"] = r.streamed;
   j["faces"] = m.faces;

@@ -1,4 +1,4 @@
-// The readable report of `pgamesh props` and the <inertial> elements for URDF and MJCF.
+// The readable report of `pgamesh props`: figures in the file's unit, named when it has one.
 #include <cmath>
 #include <cstdio>
 
@@ -27,12 +27,12 @@ std::string topology_line(const std::optional<TopologyReport>& topology) {
   return s;
 }
 
-// " mm^3" and the like after a figure when the file states its unit, nothing otherwise.
-std::string unit_suffix(LengthUnit u, int power) {
-  if (u == LengthUnit::unspecified) return "";
+// " mm", " mm^2", " mm^3" after a figure in the file's unit; nothing for a unitless file.
+std::string unit_suffix(const Analysis& r, int power) {
+  if (r.unit == LengthUnit::unspecified) return "";
   // Appended piece by piece: GCC 12's -Wrestrict misfires on `"literal" + std::string&&`.
   std::string s = " ";
-  s += unit_name(u);
+  s += unit_name(r.unit);
   if (power > 1) {
     s += '^';
     s += std::to_string(power);
@@ -45,8 +45,7 @@ void parts_lines(std::string& out, const Analysis& r) {
   if (r.parts.empty()) return;
   append(out, "parts             %zu (each alone below; the figures above are the whole)\n",
          r.parts.size());
-  const std::string u1 = unit_suffix(r.unit, 1), u2 = unit_suffix(r.unit, 2),
-                    u3 = unit_suffix(r.unit, 3);
+  const std::string u1 = unit_suffix(r, 1), u2 = unit_suffix(r, 2), u3 = unit_suffix(r, 3);
   for (std::size_t i = 0; i < r.parts.size(); ++i) {
     const PartAnalysis& p = r.parts[i];
     append(out, "  %zu '%s': %llu faces, area %.15g%s, volume %.15g%s, mass %.15g", i + 1,
@@ -61,64 +60,40 @@ void parts_lines(std::string& out, const Analysis& r) {
   }
 }
 
-// An XML comment: "--" may not occur inside one.
-std::string xml_comment(std::string text) {
-  for (std::size_t k; (k = text.find("--")) != std::string::npos;) text.replace(k, 2, "- -");
-  return "<!-- " + text + " -->\n";
-}
-
-// The warning a forced export carries inside the file, where it travels with the figures: the
-// front door's reasons the body is not a valid solid (pgamesh props refuses such a body unless
-// --force).
-std::string not_meaningful_comment(const Analysis& r) {
-  if (r.volume_valid.value_or(false)) return "";
-  std::string s =
-      "WARNING: forced output, not a valid solid; these figures do not describe a body:";
-  for (const auto& reason : r.reasons) s += " " + reason + ";";
-  return xml_comment(s);
-}
-
-// The rotor's quaternion (w, x, y, z): R = cos(θ/2) − sin(θ/2)(a_x e23 + a_y e31 + a_z e12) turns
-// by +θ about a (docs/conventions.md §7), the quaternion
-// cos(θ/2) + sin(θ/2)(a_x i + a_y j + a_z k).
-std::array<double, 4> quaternion(const pga3::Motor<double>& r) {
-  return {r.s, -r.e23, -r.e31, -r.e12};
-}
-
 }  // namespace
 
 std::string props_text(const Analysis& r, bool about_origin) {
   const MassProperties& m = r.mass;
+  const std::string len = unit_suffix(r, 1), area = unit_suffix(r, 2), vol = unit_suffix(r, 3);
   std::string out;
   append(out, "file              %s (%s%s%s)\n", r.file.c_str(), format_name(r.format),
          r.single_precision ? ", float32" : "", r.streamed ? ", streamed" : "");
-  if (r.unit != LengthUnit::unspecified)
-    append(out, "unit              %s (stated by the file; lengths, areas, volumes in it)\n",
-           unit_name(r.unit));
-  const std::string u1 = unit_suffix(r.unit, 1), u2 = unit_suffix(r.unit, 2),
-                    u3 = unit_suffix(r.unit, 3);
   append(out, "faces             %llu (%llu triangles), %llu vertices",
          static_cast<unsigned long long>(m.faces), static_cast<unsigned long long>(m.triangles),
          static_cast<unsigned long long>(m.vertices));
   if (r.topology)
     append(out, " (%llu after welding)", static_cast<unsigned long long>(r.topology->vertices));
   append(out, "\ntopology          %s\n", topology_line(r.topology).c_str());
-  append(out, "area              %.15g%s\n", m.area, u2.c_str());
+  append(out, "unit              %s%s\n", unit_name(r.unit),
+         r.unit == LengthUnit::unspecified ? " (the file states none; --unit U names it)" : "");
+  append(out, "area              %.15g%s\n", m.area, area.c_str());
   append(out, "volume            %.15g%s (signed: positive for outward faces)\n", m.volume,
-         u3.c_str());
-  append(out, "density           %.15g%s\n", m.density,
+         vol.c_str());
+  append(out, "density           %.15g%s%s\n", m.density,
+         r.unit == LengthUnit::unspecified ? "" : (" per" + vol).c_str(),
          r.density_from_mass ? " (from the given mass)" : "");
   append(out, "mass              %.15g\n", m.mass);
   append(out, "gap area          %.15g%s (1/2 |sum of face carriers|: 0 when closed)\n", m.gap_area,
-         u2.c_str());
+         area.c_str());
   if (!std::isfinite(m.center_of_mass.x)) {
     out += "centre of mass    undefined (zero volume)\n";
   } else {
     append(out, "centre of mass    %.15g %.15g %.15g%s\n", m.center_of_mass.x, m.center_of_mass.y,
-           m.center_of_mass.z, u1.c_str());
+           m.center_of_mass.z, len.c_str());
     out +=
         "inertia about the centre of mass (tensor; off-diagonals are MINUS the products of "
-        "inertia, I_xy = -integral x y dm):\n";
+        "inertia, I_xy = -integral x y dm)" +
+        (r.unit == LengthUnit::unspecified ? std::string() : ", mass" + area) + ":\n";
     matrix(out, m.inertia_com);
     append(out,
            "products of inertia about the centre of mass (integral x y dm, ...): xy %.15g  "
@@ -153,49 +128,6 @@ std::string props_text(const Analysis& r, bool about_origin) {
   }
   parts_lines(out, r);
   for (const auto& w : r.warnings) out += "warning: " + w + "\n";
-  return out;
-}
-
-std::string props_urdf(const Analysis& r) {
-  const MassProperties& m = r.mass;
-  const Mat3& i = m.inertia_com;
-  std::string head;
-  append(head,
-         "pgamesh props %s: URDF inertial. origin xyz = centre of mass in the mesh frame (rpy 0: "
-         "axes of the mesh frame); inertia about the centre of mass, tensor entries: ixy = I_xy = "
-         "-integral x y dm (URDF convention). density %.17g, mass %.17g.",
-         r.file.c_str(), m.density, m.mass);
-  std::string out = xml_comment(head) + not_meaningful_comment(r);
-  append(out,
-         "<inertial>\n"
-         "  <origin xyz=\"%.17g %.17g %.17g\" rpy=\"0 0 0\"/>\n"
-         "  <mass value=\"%.17g\"/>\n"
-         "  <inertia ixx=\"%.17g\" ixy=\"%.17g\" ixz=\"%.17g\" iyy=\"%.17g\" iyz=\"%.17g\" "
-         "izz=\"%.17g\"/>\n"
-         "</inertial>\n",
-         m.center_of_mass.x, m.center_of_mass.y, m.center_of_mass.z, m.mass, i[0][0], i[0][1],
-         i[0][2], i[1][1], i[1][2], i[2][2]);
-  return out;
-}
-
-std::string props_mjcf(const Analysis& r) {
-  const MassProperties& m = r.mass;
-  const Mat3& i = m.inertia_com;
-  const auto q = quaternion(m.principal.rotor);
-  std::string head;
-  append(head,
-         "pgamesh props %s: MJCF inertial. pos = centre of mass in the mesh frame; "
-         "diaginertia = principal moments (ascending) about the centre of mass; quat (w x y z) "
-         "turns the mesh frame into the principal frame (its axes are the principal axes). "
-         "density %.17g. Equivalent: fullinertia=\"%.17g %.17g %.17g %.17g %.17g %.17g\" "
-         "(ixx iyy izz ixy ixz iyz, tensor entries, ixy = -integral x y dm) with no quat.",
-         r.file.c_str(), m.density, i[0][0], i[1][1], i[2][2], i[0][1], i[0][2], i[1][2]);
-  std::string out = xml_comment(head) + not_meaningful_comment(r);
-  append(out,
-         "<inertial pos=\"%.17g %.17g %.17g\" quat=\"%.17g %.17g %.17g %.17g\" mass=\"%.17g\" "
-         "diaginertia=\"%.17g %.17g %.17g\"/>\n",
-         m.center_of_mass.x, m.center_of_mass.y, m.center_of_mass.z, q[0], q[1], q[2], q[3], m.mass,
-         m.principal.moments[0], m.principal.moments[1], m.principal.moments[2]);
   return out;
 }
 

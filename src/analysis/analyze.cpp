@@ -76,8 +76,8 @@ Analysis mass_report(MassProperties mass, const MeshSource& source,
   r.file = source.path;
   r.format = source.format;
   r.single_precision = source.single_precision;
-  r.density_from_mass = options.mass.mass.has_value();
   r.unit = source.unit;
+  r.density_from_mass = options.mass.mass.has_value();
   r.mass = std::move(mass);
   r.warnings = source.warnings;
   r.warnings.insert(r.warnings.end(), r.mass.warnings.begin(), r.mass.warnings.end());
@@ -186,6 +186,19 @@ std::optional<Analysis> ply_topology_report(std::span<const char> bytes, const s
   }
 }
 
+// The unit of the figures: the file's own, else the one stated in the options; a file whose unit
+// differs from the stated one is refused rather than silently rescaled (docs/formats.md, "Units").
+Analysis with_unit(Analysis r, const AnalysisOptions& options) {
+  if (r.unit == LengthUnit::unspecified) {
+    r.unit = options.unit;
+  } else if (options.unit != LengthUnit::unspecified && options.unit != r.unit) {
+    throw std::invalid_argument(std::string("the file states its unit (") + unit_name(r.unit) +
+                                "), not " + unit_name(options.unit) +
+                                " as --unit says (pgamesh convert --unit rescales a file)");
+  }
+  return r;
+}
+
 }  // namespace
 
 Analysis analyze_mesh(const Mesh& mesh, const MeshSource& source, const AnalysisOptions& options) {
@@ -194,7 +207,7 @@ Analysis analyze_mesh(const Mesh& mesh, const MeshSource& source, const Analysis
   if (options.topology) r.topology = analyze_topology(mesh, options.topology_options);
   judge(r);
   if (one_whole_part(mesh, source)) r.parts = whole_as_part(r, source.parts[0]);
-  return r;
+  return with_unit(std::move(r), options);
 }
 
 namespace {
@@ -251,6 +264,8 @@ Analysis analyze(std::span<const char> bytes, const std::string& name,
       source.path = name;
       MassProperties mass =
           ascii_stl_mass_properties(bytes, name, source, options.mass, release_records);
+      // An ASCII STL named .slp is an SLP without colours, as read_mesh_bytes names it.
+      if (format_for_extension(name) == MeshFormat::slp) source.format = MeshFormat::slp;
       Analysis r = mass_report(std::move(mass), source, options);
       r.streamed = true;
       judge(r);
@@ -264,7 +279,9 @@ Analysis analyze(std::span<const char> bytes, const std::string& name,
   // The careful readers, releasing the file's pages as they parse (release_records); the mesh is
   // then handed to the topology pass, which frees it once welded (topology.hpp).
   MeshSource source;
-  Mesh mesh = detail::read_mesh_bytes(bytes, name, &source, options.format, release_records);
+  // A mapped file (file ≥ 0) is named by its path: a glTF's external buffers are read beside it.
+  Mesh mesh =
+      detail::read_mesh_bytes(bytes, name, &source, options.format, release_records, file >= 0);
   source.path = name;
   Analysis r = mass_report(mesh, source, options);
   r.parts = part_analyses(mesh, source, options);
@@ -279,14 +296,14 @@ Analysis analyze(std::span<const char> bytes, const std::string& name,
 
 Analysis analyze_bytes(std::span<const char> bytes, const std::string& name,
                        const AnalysisOptions& options) {
-  return analyze(bytes, name, options, -1);
+  return with_unit(analyze(bytes, name, options, -1), options);
 }
 
 Analysis analyze_file(const std::string& path, const AnalysisOptions& options) {
   // MappedFile maps regular files (descriptor() ≥ 0); standard input and pipes are read into a
   // buffer of its own.
   const MappedFile file = MappedFile::open(path);
-  return analyze(file.bytes(), path, options, file.descriptor());
+  return with_unit(analyze(file.bytes(), path, options, file.descriptor()), options);
 }
 
 }  // namespace pgamesh

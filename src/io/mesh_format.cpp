@@ -42,6 +42,12 @@ const char* format_name(MeshFormat f) {
       return "off";
     case MeshFormat::threemf:
       return "3mf";
+    case MeshFormat::gltf:
+      return "gltf";
+    case MeshFormat::glb:
+      return "glb";
+    case MeshFormat::slp:
+      return "slp";
     case MeshFormat::unknown:
       break;
   }
@@ -60,6 +66,9 @@ MeshFormat format_from_name(std::string_view name) {
     return MeshFormat::ply_binary_be;
   if (n == "off") return MeshFormat::off;
   if (n == "3mf") return MeshFormat::threemf;
+  if (n == "gltf") return MeshFormat::gltf;
+  if (n == "glb") return MeshFormat::glb;
+  if (n == "slp") return MeshFormat::slp;
   return MeshFormat::unknown;
 }
 
@@ -72,6 +81,9 @@ MeshFormat format_for_extension(std::string_view path, MeshFormat preferred) {
   if (ext == "obj") return MeshFormat::obj;
   if (ext == "off") return MeshFormat::off;
   if (ext == "3mf") return MeshFormat::threemf;
+  if (ext == "gltf") return MeshFormat::gltf;
+  if (ext == "glb") return MeshFormat::glb;
+  if (ext == "slp") return MeshFormat::slp;
   return MeshFormat::unknown;
 }
 

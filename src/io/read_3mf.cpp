@@ -14,6 +14,7 @@
 #include <unordered_map>
 
 #include "detail/memory/huge_pages.hpp"
+#include "io/affine.hpp"
 #include "io/readers.hpp"
 #include "io/text_cursor.hpp"
 #include "io/xml_arena.hpp"
@@ -27,36 +28,25 @@ namespace {
 constexpr std::string_view model_relationship =
     "http://schemas.microsoft.com/3dmanufacturing/2013/01/3dmodel";
 
-// A 3MF transform: the 4×3 matrix "m00 m01 m02 m10 m11 m12 m20 m21 m22 m30 m31 m32" acting on row
-// vectors, p' = [x y z 1] · M (3MF core specification, §3.3 "3D Matrices"). nullopt is the
-// identity, kept apart so that untransformed coordinates are copied bit for bit.
-using Affine = std::array<double, 12>;
-
-Vec3d apply(const Affine& m, const Vec3d& p) {
-  return {p.x * m[0] + p.y * m[3] + p.z * m[6] + m[9], p.x * m[1] + p.y * m[4] + p.z * m[7] + m[10],
-          p.x * m[2] + p.y * m[5] + p.z * m[8] + m[11]};
+// A 3MF transform is the 4×3 matrix "m00 m01 m02 m10 m11 m12 m20 m21 m22 m30 m31 m32" acting on
+// row vectors, p' = [x y z 1] · M (3MF core specification, §3.3 "3D Matrices"): as an Affine
+// (columns acting on column vectors), row i is (m0i, m1i, m2i, m3i). No attribute is the identity.
+Affine affine_from_3mf(const std::array<double, 12>& a) {
+  Affine t;
+  t.identity = false;
+  for (int i = 0; i < 3; ++i) {
+    for (int k = 0; k < 3; ++k) t.m[i][k] = a[3 * k + i];
+    t.m[i][3] = a[9 + i];
+  }
+  return t;
 }
 
-// first · second: the transform that applies `first`, then `second` (row vectors: p · A · B).
+// `first`, then `second`; nullopt is the identity.
 std::optional<Affine> then(const std::optional<Affine>& first,
                            const std::optional<Affine>& second) {
   if (!first) return second;
   if (!second) return first;
-  const Affine& a = *first;
-  const Affine& b = *second;
-  Affine c{};
-  for (int i = 0; i < 4; ++i)
-    for (int j = 0; j < 3; ++j) {
-      double s = i == 3 ? b[9 + j] : 0.0;
-      for (int k = 0; k < 3; ++k) s += a[3 * i + k] * b[3 * k + j];
-      c[3 * i + j] = s;
-    }
-  return c;
-}
-
-double determinant(const Affine& m) {
-  return m[0] * (m[4] * m[8] - m[5] * m[7]) - m[1] * (m[3] * m[8] - m[5] * m[6]) +
-         m[2] * (m[3] * m[7] - m[4] * m[6]);
+  return compose(*second, *first);
 }
 
 std::string_view local_name(const char* name) {
@@ -170,7 +160,7 @@ std::uint32_t required_index(const XmlPart& x, const pugi::xml_node& n, const ch
 std::optional<Affine> transform_of(const XmlPart& x, const pugi::xml_node& n) {
   const pugi::xml_attribute a = n.attribute("transform");
   if (!a) return std::nullopt;
-  Affine m{};
+  std::array<double, 12> m{};
   const char* p = a.value();
   const char* end = p + std::strlen(p);
   std::size_t k = 0;
@@ -188,7 +178,7 @@ std::optional<Affine> transform_of(const XmlPart& x, const pugi::xml_node& n) {
   }
   if (k != 12)
     x.fail(n, a, "a transform has 12 numbers (m00 m01 m02 m10 … m32), not " + std::to_string(k));
-  return m;
+  return affine_from_3mf(m);
 }
 
 struct Component {
@@ -504,12 +494,12 @@ void read_3mf(std::span<const char> bytes, const std::string& name, Mesh& mesh,
       const Instance in = std::move(stack.back());
       stack.pop_back();
       const Object& o = objects[in.object];
-      const bool flip = in.transform && determinant(*in.transform) < 0;
+      const bool flip = in.transform && in.transform->determinant() < 0;
       mirrored |= flip && !o.triangles.empty();
       const auto base = static_cast<std::uint32_t>(mesh.vertices.size());
       if (in.transform) {
         for (const Vec3d& p : o.vertices) {
-          const Vec3d q = apply(*in.transform, p);
+          const Vec3d q = in.transform->apply(p);
           if (!is_finite(q))
             fail(item.offset, "<item>: the transforms take a vertex of object " +
                                   std::to_string(o.id) + " beyond double range");

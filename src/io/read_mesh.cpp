@@ -58,6 +58,22 @@ bool is_obj_keyword(std::string_view w) {
 bool is_stl_family(MeshFormat f) {
   return f == MeshFormat::stl_ascii || f == MeshFormat::stl_binary;
 }
+
+// Whether a 'color' statement starts a line in the first 64 KiB: an SLP file (Pro/ENGINEER render
+// output) rather than a plain ASCII STL.
+bool has_color_line(std::span<const char> bytes) {
+  const std::size_t n = std::min<std::size_t>(bytes.size(), 65536);
+  const std::string_view text(bytes.data(), n);
+  for (std::size_t at = text.find("color"); at != std::string_view::npos;
+       at = text.find("color", at + 1)) {
+    std::size_t b = at;
+    while (b > 0 && detail::is_blank(text[b - 1])) --b;
+    if ((b == 0 || text[b - 1] == '\n') && at + 5 < n && detail::is_blank(text[at + 5]))
+      return true;
+  }
+  return false;
+}
+
 bool is_ply_family(MeshFormat f) {
   return f == MeshFormat::ply_ascii || f == MeshFormat::ply_binary_le ||
          f == MeshFormat::ply_binary_be;
@@ -69,6 +85,7 @@ MeshFormat detect_format(std::span<const char> bytes) {
   if (bytes.empty()) return MeshFormat::unknown;
   if (bytes.size() >= 4 && std::memcmp(bytes.data(), "PK\x03\x04", 4) == 0)
     return MeshFormat::threemf;  // a zip archive: the only zip-packaged format read
+  if (bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0) return MeshFormat::glb;
   if (bytes.size() >= stl_header_bytes &&
       stl_header_bytes + stl_record_bytes * std::uint64_t{le32(bytes.data() + 80)} == bytes.size())
     return MeshFormat::stl_binary;
@@ -95,14 +112,17 @@ MeshFormat detect_format(std::span<const char> bytes) {
     return MeshFormat::ply_ascii;  // the PLY reader reports a bad format line
   }
   if (is_off_keyword(w)) return MeshFormat::off;
-  if (text && detail::same_word(w, "solid")) return MeshFormat::stl_ascii;
+  if (text && detail::same_word(w, "solid"))
+    return has_color_line(bytes) ? MeshFormat::slp : MeshFormat::stl_ascii;
+  if (text && !w.empty() && w[0] == '{') return MeshFormat::gltf;  // a JSON object
   if (text && is_obj_keyword(w)) return MeshFormat::obj;
   if (!text) return MeshFormat::stl_binary;  // its reader explains the size mismatch
   return MeshFormat::unknown;
 }
 
 Mesh detail::read_mesh_bytes(std::span<const char> bytes, const std::string& name,
-                             MeshSource* source, MeshFormat format, bool release_pages) {
+                             MeshSource* source, MeshFormat format, bool release_pages,
+                             bool name_is_path) {
   MeshSource local;
   MeshSource& src = source ? *source : local;
   src = MeshSource{};
@@ -111,8 +131,17 @@ Mesh detail::read_mesh_bytes(std::span<const char> bytes, const std::string& nam
   if (std::all_of(bytes.begin(), bytes.end(), detail::is_space))  // stops at the first data byte
     throw InputError(name, detail::byte_position(0), "empty file: no mesh data");
 
-  const MeshFormat f = format == MeshFormat::unknown ? detect_format(bytes) : format;
-  if (is_stl_family(f)) {
+  MeshFormat f = format == MeshFormat::unknown ? detect_format(bytes) : format;
+  // An ASCII STL named .slp is an SLP file without colours (the same grammar, read as such).
+  if (f == MeshFormat::stl_ascii && format == MeshFormat::unknown &&
+      format_for_extension(name) == MeshFormat::slp)
+    f = MeshFormat::slp;
+  if (f == MeshFormat::slp) {
+    detail::read_stl_ascii(bytes, name, mesh, src, release_pages);
+    src.format = MeshFormat::slp;
+  } else if (f == MeshFormat::gltf || f == MeshFormat::glb) {
+    detail::read_gltf(bytes, name, mesh, src, name_is_path);
+  } else if (is_stl_family(f)) {
     if (binary_stl_view(bytes, name))
       detail::read_stl_binary(bytes, name, mesh, src, release_pages);
     else
@@ -126,8 +155,9 @@ Mesh detail::read_mesh_bytes(std::span<const char> bytes, const std::string& nam
   } else if (f == MeshFormat::threemf) {
     detail::read_3mf(bytes, name, mesh, src);
   } else {
-    throw InputError(name, detail::text_position(bytes.data(), bytes.data()),
-                     "unrecognised mesh format (expected STL, OBJ, PLY, OFF or 3MF content)");
+    throw InputError(
+        name, detail::text_position(bytes.data(), bytes.data()),
+        "unrecognised mesh format (expected STL, OBJ, PLY, OFF, 3MF, glTF or SLP content)");
   }
   // The readers release in steps as they go; the last step and the first page (detection) too.
   if (release_pages) detail::release_pages(bytes.data(), bytes.data() + bytes.size());
@@ -144,7 +174,8 @@ Mesh read_mesh_bytes(std::span<const char> bytes, const std::string& name, MeshS
 }
 
 Mesh read_mesh(const MappedFile& file, MeshSource* source, MeshFormat format) {
-  return detail::read_mesh_bytes(file.bytes(), file.path(), source, format, file.mapped());
+  return detail::read_mesh_bytes(file.bytes(), file.path(), source, format, file.mapped(),
+                                 file.path() != "-");
 }
 
 Mesh read_mesh(const std::string& path, MeshSource* source, MeshFormat format) {

@@ -16,8 +16,10 @@ namespace pgamesh::detail {
 
 // read_mesh_bytes (read_mesh.hpp), releasing the pages it has parsed when `release_pages` (the
 // bytes of a read-only file mapping only): what read_mesh(MappedFile) and the front door call.
+// `name_is_path`: `name` is the path of the file the bytes are (a glTF's external buffers are read
+// from its folder).
 Mesh read_mesh_bytes(std::span<const char> bytes, const std::string& name, MeshSource* source,
-                     MeshFormat format, bool release_pages);
+                     MeshFormat format, bool release_pages, bool name_is_path = false);
 
 void read_stl_binary(std::span<const char> bytes, const std::string& name, Mesh& mesh,
                      MeshSource& source, bool release_pages = false);
@@ -31,6 +33,11 @@ void read_off(std::span<const char> bytes, const std::string& name, Mesh& mesh, 
               bool release_pages = false);
 // A 3MF package (zip): the whole build, one MeshPart per build item, the unit in `source`.
 void read_3mf(std::span<const char> bytes, const std::string& name, Mesh& mesh, MeshSource& source);
+// glTF 2.0 (.gltf JSON or .glb). With `external_files`, `name` is the file's path and buffers in
+// files beside it are read (relative URIs that stay inside its folder); without, only data: URIs
+// and the GLB binary chunk.
+void read_gltf(std::span<const char> bytes, const std::string& name, Mesh& mesh, MeshSource& source,
+               bool external_files);
 
 // The boundary sums of a PLY file's faces about `reference` (reference_point of its vertices),
 // accumulated as mesh_boundary_sums accumulates them, and the face counts.

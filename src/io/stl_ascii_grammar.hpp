@@ -10,6 +10,10 @@
 // 'endsolid' and 'facet' lines is skipped unread (names may hold any bytes; NaN normals of
 // degenerate facets are common and harmless: the vertex order is the truth).
 //
+// The same grammar reads SLP (Pro/ENGINEER render files, docs/formats.md): 'color R G B' lines
+// between facets and inside them, and 'normal N' lines (vertex normals) between 'facet' and
+// 'outer loop', are skipped unread; they never occur in an STL that would be read otherwise.
+//
 // A consumer has two members:
 //   void vertex(const Vec3d& v);    // the next vertex of the current facet, in file order
 //   void end_facet(std::size_t n);  // the current facet is complete: its last n ≥ 3 vertices
@@ -118,6 +122,11 @@ void parse_stl_ascii_statements(TextCursor& c, StlAsciiState& s, Consumer& out,
     const char* at = c.p;
     if (s.in_solid && keyword(c, "facet")) {
       c.skip_line();  // "normal nx ny nz" is ignored: the vertex order is the truth
+      for (;;) {      // SLP's vertex normals and colours
+        c.skip_space();
+        if (!keyword(c, "normal") && !keyword(c, "color")) break;
+        c.skip_line();
+      }
       expect("outer");
       expect("loop");
       std::size_t n = 0;
@@ -137,6 +146,8 @@ void parse_stl_ascii_statements(TextCursor& c, StlAsciiState& s, Consumer& out,
           ++n;
         } else if (keyword(c, "endloop")) {
           break;
+        } else if (keyword(c, "color")) {  // SLP
+          c.skip_line();
         } else {
           c.fail(vat, "expected 'vertex' or 'endloop', found " + describe_at(vat, c.end));
         }
@@ -148,6 +159,8 @@ void parse_stl_ascii_statements(TextCursor& c, StlAsciiState& s, Consumer& out,
       s.triangles += n - 2;
       out.end_facet(n);
       expect("endfacet");
+    } else if (s.in_solid && keyword(c, "color")) {  // SLP: the colour of the next facets
+      c.skip_line();
     } else if (s.in_solid && keyword(c, "endsolid")) {
       c.skip_line();
       s.in_solid = false;

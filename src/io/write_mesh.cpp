@@ -7,6 +7,7 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "io/write_gltf.hpp"
 #include "io/zip_package.hpp"
 #include "pgamesh/io/write_file.hpp"
 
@@ -317,6 +318,11 @@ std::string write_mesh_bytes(const Mesh& mesh, MeshFormat format, const WriteOpt
       return off(mesh);
     case MeshFormat::threemf:
       return threemf(mesh, options);
+    case MeshFormat::gltf:
+    case MeshFormat::glb:
+      return detail::write_gltf(mesh, format == MeshFormat::glb);
+    case MeshFormat::slp:  // an SLP without colours is ASCII STL text
+      return stl_ascii(mesh, options);
     case MeshFormat::unknown:
       break;
   }

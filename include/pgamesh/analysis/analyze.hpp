@@ -20,6 +20,9 @@ struct AnalysisOptions {
   bool topology = true;  // false: no weld and edge pass (closedness is then unknown)
   TopologyOptions topology_options;
   MeshFormat format = MeshFormat::unknown;  // forced reader family (unknown: from the content)
+  // The unit of a file that states none (--unit). A file that states its unit (3MF, glTF) and a
+  // different one here is refused (std::invalid_argument): convert it with `pgamesh convert`.
+  LengthUnit unit = LengthUnit::unspecified;
 };
 
 // The analysis of one part of a file that holds several (MeshSource::parts: a 3MF build item):
@@ -35,17 +38,18 @@ struct PartAnalysis {
 struct Analysis {
   std::string file;
   MeshFormat format = MeshFormat::unknown;
-  bool single_precision = false;  // the coordinates were float32 (binary STL, float PLY)
-  bool streamed = false;          // accumulated straight from the file, no Mesh built
+  bool single_precision = false;  // the coordinates were float32 (binary STL, float PLY, glTF)
+  // The unit of the figures: the file's own (3MF, glTF), else AnalysisOptions::unit.
+  LengthUnit unit = LengthUnit::unspecified;
+  bool streamed = false;  // accumulated straight from the file, no Mesh built
   MassProperties mass;
   std::optional<TopologyReport> topology;  // absent when not requested
   // Whether the volume, centre of mass and inertia describe a solid: false for an open,
   // inconsistently oriented, inward or flat mesh, absent when unknown for want of topology.
   std::optional<bool> volume_valid;
-  std::vector<std::string> reasons;           // why the volume is not valid, in plain words
-  std::vector<std::string> warnings;          // reader repairs, float32 precision, …
-  bool density_from_mass = false;             // the density was derived from options.mass.mass
-  LengthUnit unit = LengthUnit::unspecified;  // the unit the file states (3MF), figures are in it
+  std::vector<std::string> reasons;   // why the volume is not valid, in plain words
+  std::vector<std::string> warnings;  // reader repairs, float32 precision, …
+  bool density_from_mass = false;     // the density was derived from options.mass.mass
   // One per part when the file holds several (MeshSource::parts); the figures above are those of
   // the whole (mass properties add up; topology is per part).
   std::vector<PartAnalysis> parts;

@@ -21,7 +21,10 @@ enum class MeshFormat {
   ply_binary_le,
   ply_binary_be,
   off,
-  threemf
+  gltf,    // glTF 2.0 JSON (.gltf)
+  glb,     // glTF 2.0 binary container (.glb)
+  slp,     // Pro/ENGINEER render file: ASCII STL with colours and vertex normals
+  threemf  // 3MF package (.3mf)
 };
 
 struct Mesh {
@@ -52,8 +55,8 @@ struct MeshPart {
 struct MeshSource {
   std::string path;
   MeshFormat format = MeshFormat::unknown;
-  bool single_precision = false;              // coordinates were float32 (binary STL, float PLY)
-  std::uint64_t groups = 0;                   // OBJ g/o statements (ignored, counted)
+  bool single_precision = false;  // coordinates were float32 (binary STL, float PLY, glTF)
+  std::uint64_t groups = 0;       // OBJ g/o statements (ignored, counted)
   LengthUnit unit = LengthUnit::unspecified;  // the file's own unit, if it states one
   std::vector<MeshPart> parts;                // empty for formats of one object
   std::vector<std::string> warnings;

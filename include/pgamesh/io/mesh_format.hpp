@@ -9,7 +9,8 @@
 namespace pgamesh {
 
 // The name printed in outputs: "stl-ascii", "stl-binary", "obj", "ply-ascii",
-// "ply-binary-little-endian", "ply-binary-big-endian", "off", "3mf" (or "unknown").
+// "ply-binary-little-endian", "ply-binary-big-endian", "off", "gltf", "glb", "slp", "3mf" (or
+// "unknown").
 const char* format_name(MeshFormat f);
 
 // The format a name stands for, in any letter case: the names above, the families "stl" (binary),
@@ -18,9 +19,9 @@ const char* format_name(MeshFormat f);
 // binary STL is still decided by size arithmetic, and a PLY's own header states its encoding.
 MeshFormat format_from_name(std::string_view name);
 
-// The family of the file's extension (.stl, .obj, .ply, .off, .3mf in any letter case), written in
-// `preferred` when that is of the same family, else in the family's binary (or only) encoding;
-// unknown for any other extension.
+// The family of the file's extension (.stl, .obj, .ply, .off, .gltf, .glb, .slp, .3mf in any
+// letter case), written in `preferred` when that is of the same family, else in the family's
+// binary (or only) encoding; unknown for any other extension.
 MeshFormat format_for_extension(std::string_view path, MeshFormat preferred = MeshFormat::unknown);
 
 // Whether the file's extension names a format pgamesh reads.

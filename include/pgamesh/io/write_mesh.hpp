@@ -20,9 +20,12 @@ struct WriteOptions {
 };
 
 // The bytes of `mesh` in `format` (stl_ascii, stl_binary, obj, ply_ascii, ply_binary_le,
-// ply_binary_be, off, threemf). STL and 3MF hold triangles only: a polygon with n > 3 corners is
-// written as the fan (v0, vi, vi+1), which keeps its vector area and the signed volume it bounds
-// exactly. 3MF is a zip package of one object and one build item, in options.unit (millimeter,
+// ply_binary_be, off, gltf, glb, slp, threemf). STL, SLP, glTF and 3MF hold triangles only: a
+// polygon with n > 3 corners is written as the fan (v0, vi, vi+1), which keeps its vector area and
+// the signed volume it bounds exactly. glTF (a .gltf text with its buffer in a base64 data: URI,
+// or a .glb) stores float32 positions, as binary STL does; its unit is the metre by definition, so
+// `mesh` must be in metres (pgamesh convert rescales). SLP is written as ASCII STL text (no
+// colours). 3MF is a zip package of one object and one build item, in options.unit (millimeter,
 // the 3MF default, when unspecified). Throws std::invalid_argument for MeshFormat::unknown, corner
 // indices outside the vertex array, and (3MF) a triangle that repeats a vertex.
 std::string write_mesh_bytes(const Mesh& mesh, MeshFormat format, const WriteOptions& options = {});
