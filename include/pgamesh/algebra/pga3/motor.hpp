@@ -79,6 +79,46 @@ inline Motor<T> geometric_product_simd(const Motor<T>& a, const Motor<T>& b) {
   store_lanes<T>(out, 4, PGAMESH_LANES2(e, pseudo, 2, 1, 0, 4));
   return out;
 }
+
+/// The Hamilton product of quaternions held as lanes (w, x, y, z), summed lane-uniformly:
+/// a_w b + a_x (−b_x, b_w, −b_z, b_y) + a_y (−b_y, b_z, b_w, −b_x) + a_z (−b_z, −b_y, b_x, b_w),
+/// left to right. Another summation order than Quat's operator* (quaternion.hpp), so the last
+/// bits may differ from it; used where no bits are promised (float, below).
+template <class T>
+[[gnu::always_inline]] inline void hamilton_lanes(const V4<T>& a, const V4<T>& b, V4<T>& out) {
+  const V4<T> b1 = PGAMESH_LANES(b, 1, 0, 3, 2) * V4<T>{T(-1), T(1), T(-1), T(1)};
+  const V4<T> b2 = PGAMESH_LANES(b, 2, 3, 0, 1) * V4<T>{T(-1), T(1), T(1), T(-1)};
+  const V4<T> b3 = PGAMESH_LANES(b, 3, 2, 1, 0) * V4<T>{T(-1), T(-1), T(1), T(1)};
+  out = ((PGAMESH_LANES(a, 0, 0, 0, 0) * b + PGAMESH_LANES(a, 1, 1, 1, 1) * b1) +
+         PGAMESH_LANES(a, 2, 2, 2, 2) * b2) +
+        PGAMESH_LANES(a, 3, 3, 3, 3) * b3;
+}
+
+/// The motor product with lane-uniform sums, as klein sums it: q_a q_b and q_a c_b + c_a q_b
+/// with q = (s, −e23, −e31, −e12) and c = (e0123, e01, e02, e03) in four lanes each. Fewer
+/// shuffles than geometric_product_simd, other rounding than geometric_product_generic (a few
+/// ulps); float only — double keeps the generic summation order, whose bits the mesh results
+/// depend on (docs/pga3.md "Speed").
+template <class T>
+inline Motor<T> geometric_product_lanes(const Motor<T>& a, const Motor<T>& b) {
+  V4<T> alo, ahi, blo, bhi;  // (s, e01, e02, e03), (e12, e31, e23, e0123)
+  load_lanes<T>(a, 0, alo), load_lanes<T>(a, 4, ahi), load_lanes<T>(b, 0, blo);
+  load_lanes<T>(b, 4, bhi);
+  const V4<T> flip = {T(1), T(-1), T(-1), T(-1)};
+  const V4<T> qa = PGAMESH_LANES2(alo, ahi, 0, 6, 5, 4) * flip;
+  const V4<T> qb = PGAMESH_LANES2(blo, bhi, 0, 6, 5, 4) * flip;
+  const V4<T> ca = PGAMESH_LANES2(alo, ahi, 7, 1, 2, 3), cb = PGAMESH_LANES2(blo, bhi, 7, 1, 2, 3);
+  V4<T> q, x, y;
+  hamilton_lanes<T>(qa, qb, q);
+  hamilton_lanes<T>(qa, cb, x);
+  hamilton_lanes<T>(ca, qb, y);
+  const V4<T> c = x + y;
+  const V4<T> qf = q * flip;  // (s, e23, e31, e12)
+  Motor<T> out;
+  store_lanes<T>(out, 0, PGAMESH_LANES2(qf, c, 0, 5, 6, 7));
+  store_lanes<T>(out, 4, PGAMESH_LANES2(qf, c, 3, 2, 1, 4));
+  return out;
+}
 #endif
 }  // namespace detail
 
@@ -88,8 +128,11 @@ inline Motor<T> geometric_product_simd(const Motor<T>& a, const Motor<T>& b) {
 template <class T>
 constexpr Motor<T> geometric_product(const Motor<T>& a, const Motor<T>& b) {
 #ifdef PGAMESH_PGA3_SIMD
-  if constexpr (detail::kHasSimd<T>)
+  if constexpr (std::is_same_v<T, float>) {
+    if (!std::is_constant_evaluated()) return detail::geometric_product_lanes(a, b);
+  } else if constexpr (detail::kHasSimd<T>) {
     if (!std::is_constant_evaluated()) return detail::geometric_product_simd(a, b);
+  }
 #endif
   return detail::geometric_product_generic(a, b);
 }
