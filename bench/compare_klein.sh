@@ -55,7 +55,7 @@ if [ "${COUNT:-1}" = 1 ] && command -v valgrind > /dev/null; then
       items=$(valgrind --tool=callgrind --callgrind-out-file="$build/callgrind.out" \
         --collect-atstart=no "--toggle-collect=*$bm(*" "$build/bench/bench_pga3_klein" \
         "--benchmark_filter=^$bm\$" --benchmark_min_time=0.01 --benchmark_format=json \
-        2> /dev/null | python3 -c 'import json, sys
+        2> /dev/null | sed -n '/^{/,$p' | python3 -c 'import json, sys
 b = json.load(sys.stdin)["benchmarks"][0]
 print(b["iterations"] * (1024 if "Array" in b["name"] else 1))')
       ir=$(sed -n 's/^totals: //p' "$build/callgrind.out")
