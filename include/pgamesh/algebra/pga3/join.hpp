@@ -48,9 +48,9 @@ constexpr T join(const Point<T>& v, const Plane<T>& p) {
 
 namespace detail {
 #ifdef PGAMESH_PGA3_SIMD
-/// join(join(a, b), c) on four-lane vectors, summed in the same order (same bits). The points'
-/// lanes (e021, e013, e032, e123) hold (z, y, x, w): in that order the cross product's j and k
-/// lanes are (2, 0, 1) and (1, 2, 0).
+/// join(join(a, b), c) on four-lane vectors, summed in the same order (the same bits, up to the
+/// sign of a zero). The points' lanes (e021, e013, e032, e123) hold (z, y, x, w): in that order the
+/// cross product's j and k lanes are (2, 0, 1) and (1, 2, 0).
 template <class T>
 inline Plane<T> join_simd(const Point<T>& a, const Point<T>& b, const Point<T>& c) {
   V4<T> va, vb, vc;
@@ -73,7 +73,7 @@ inline Plane<T> join_simd(const Point<T>& a, const Point<T>& b, const Point<T>& 
 
 /// v0 ∨ v1 ∨ v2: the carrier of a triangle, normal (v1 − v0) × (v2 − v0), e0 coefficient −det
 /// (paper eq. 3.12, docs/conventions.md §5). float (and double under AVX) take the four-lane
-/// form of simd.hpp, which gives the same bits.
+/// form of simd.hpp (the same values).
 template <class T>
 constexpr Plane<T> join(const Point<T>& a, const Point<T>& b, const Point<T>& c) {
 #ifdef PGAMESH_PGA3_SIMD

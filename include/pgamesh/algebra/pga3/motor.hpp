@@ -41,13 +41,13 @@ constexpr Motor<T> geometric_product_generic(const Motor<T>& a, const Motor<T>& 
 
 #ifdef PGAMESH_PGA3_SIMD
 /// geometric_product_generic on four-lane vectors, with every coefficient summed in the same
-/// order (so the same bits): with B = (e23, e31, e12) = −q_v and m = (e01, e02, e03) = c_v, the
-/// three quaternion products' vector parts are lane-wise
+/// order (the same bits, up to the sign of a zero): with B = (e23, e31, e12) = −q_v and m = (e01,
+/// e02, e03) = c_v, the three quaternion products' vector parts are lane-wise
 ///   q_a q_b → −(a_w B_b + b_w B_a) − (B_a,k B_b,j − B_a,j B_b,k)   (i, j, k cyclic),
 ///   q_a c_b → (a_w m_b − b_p B_a) + (B_a,k m_b,j − B_a,j m_b,k),
 ///   c_a q_b → (b_w m_a − a_p B_b) + (m_a,k B_b,j − m_a,j B_b,k),
 /// and their scalar parts share one vector (a_w b_w, a_w b_p, a_p b_w) ∓ the three dot products.
-/// Negations are exact, so moving them does not change a bit.
+/// Negations are exact, so moving them changes no bit but the sign of a zero sum.
 template <class T>
 inline Motor<T> geometric_product_simd(const Motor<T>& a, const Motor<T>& b) {
   V4<T> alo, ahi, blo, bhi;  // (s, e01, e02, e03) and (e12, e31, e23, e0123)
@@ -124,7 +124,8 @@ inline Motor<T> geometric_product_lanes(const Motor<T>& a, const Motor<T>& b) {
 
 /// The geometric product A B of two motors, (q_a + ε c_a)(q_b + ε c_b) =
 /// q_a q_b + ε (q_a c_b + c_a q_b). As a motion, B acts first: (A B) X (A B)~ = A (B X B̃) Ã.
-/// float and double run the four-lane form (simd.hpp), which gives the same bits.
+/// float runs geometric_product_lanes, double the four-lane form under AVX (same values as the
+/// generic formula) and the generic formula otherwise (docs/pga3.md "Speed").
 template <class T>
 constexpr Motor<T> geometric_product(const Motor<T>& a, const Motor<T>& b) {
 #ifdef PGAMESH_PGA3_SIMD
@@ -255,7 +256,8 @@ inline Point<T> apply_simd(const Motor<T>& mo, const Point<T>& x) {
   return out;
 }
 
-/// apply_generic for planes on four-lane vectors, summed in the same order (same bits): normal
+/// apply_generic for planes on four-lane vectors, summed in the same order (the same bits, up to
+/// the sign of a zero): normal
 /// ((s n + 2 (B·n) B) − 2 q_w (B × n)), offset (q_w² + B·B) d + 2 ((c_w (B·n) + q_w (n·m))
 /// − (B × n)·m).
 template <class T>
