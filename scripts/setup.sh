@@ -7,7 +7,8 @@ pkgs=(cmake ninja-build g++ make pkg-config libgtest-dev libgmock-dev libbenchma
       libgmp-dev libcpp-httplib-dev libcli11-dev)
 case "$what" in
   test) pkgs+=(clang libclang-rt-14-dev clang-format chromium curl) ;;
-  bench) pkgs+=(admesh hyperfine libcgal-dev python3-vtk9 python3-stl python3-open3d python3-numpy time) ;;
+  bench) pkgs+=(admesh hyperfine libcgal-dev python3-vtk9 python3-stl python3-open3d python3-numpy time
+               valgrind) ;;
 esac
 # The viewer's page needs node and npm (for three.js and, in tests, playwright-core): Debian's
 # only when the machine has none of its own.
