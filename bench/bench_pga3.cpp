@@ -1,14 +1,27 @@
 // Core PGA3 operations (ns per operation): motor × motor, the motor sandwich of a point, a plane
 // and a line, the join of three points (a triangle carrier), exp of a bivector, log of a motor,
-// and the general 16-component geometric product for comparison. Each benchmark walks a ring of
-// 1024 random inputs so the compiler cannot fold them.
+// a motor applied to 1024 points or planes at once (structure of arrays), and the general
+// 16-component geometric product for comparison. Each benchmark walks a ring of 1024 random
+// inputs so the compiler cannot fold them, and hands every result to DoNotOptimize.
 //   build/release/bench/bench_pga3 --benchmark_min_time=0.2s
+//
+// Built a second time as bench_pga3_klein when klein's headers are given
+// (-DPGAMESH_KLEIN_DIR=…, bench/compare_klein.sh): the same benchmarks then also run klein
+// (jeremyong/klein, float SSE) on the same rings (the float ring, converted), and main() first
+// checks that both libraries give the same geometric answers on every input (docs/pga3.md
+// "Speed"; the sign relations are those of docs/conventions.md §4).
 #include <benchmark/benchmark.h>
 
+#include <cmath>
+#include <cstdio>
 #include <random>
 #include <vector>
 
 #include "pgamesh/algebra/pga3.hpp"
+
+#ifdef PGAMESH_BENCH_KLEIN
+#include <klein/klein.hpp>
+#endif
 
 namespace {
 
@@ -24,6 +37,8 @@ struct Inputs {
   std::vector<Plane<T>> planes;
   std::vector<Line<T>> lines;
   std::vector<Multivector<T>> multivectors;
+  // The points and planes again as separate coordinate arrays (the batch forms).
+  std::vector<T> px, py, pz, na, nb, nc, nd;
 
   Inputs() {
     std::mt19937 rng(1234);
@@ -37,6 +52,13 @@ struct Inputs {
       Multivector<T> m;
       for (T& c : m.c) c = u(rng);
       multivectors.push_back(m);
+      px.push_back(points.back().e032);
+      py.push_back(points.back().e013);
+      pz.push_back(points.back().e021);
+      na.push_back(planes.back().e1);
+      nb.push_back(planes.back().e2);
+      nc.push_back(planes.back().e3);
+      nd.push_back(planes.back().e0);
     }
   }
 };
@@ -125,6 +147,41 @@ void BM_Log(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations());
 }
 
+// One motor moves the whole ring of points (weight 1) given as x, y, z arrays: items = points.
+template <class T>
+void BM_SandwichPointArray(benchmark::State& state) {
+  const auto& in = inputs<T>();
+  std::vector<T> x(kRing), y(kRing), z(kRing);
+  std::size_t i = 0;
+  for (auto _ : state) {
+    apply_to_points(in.motors[i], in.px, in.py, in.pz, x, y, z);
+    benchmark::DoNotOptimize(x.data());
+    benchmark::DoNotOptimize(y.data());
+    benchmark::DoNotOptimize(z.data());
+    benchmark::ClobberMemory();
+    i = (i + 1) % kRing;
+  }
+  state.SetItemsProcessed(state.iterations() * kRing);
+}
+
+// One motor moves the whole ring of planes given as a, b, c, d arrays: items = planes.
+template <class T>
+void BM_SandwichPlaneArray(benchmark::State& state) {
+  const auto& in = inputs<T>();
+  std::vector<T> a(kRing), b(kRing), c(kRing), d(kRing);
+  std::size_t i = 0;
+  for (auto _ : state) {
+    apply_to_planes(in.motors[i], in.na, in.nb, in.nc, in.nd, a, b, c, d);
+    benchmark::DoNotOptimize(a.data());
+    benchmark::DoNotOptimize(b.data());
+    benchmark::DoNotOptimize(c.data());
+    benchmark::DoNotOptimize(d.data());
+    benchmark::ClobberMemory();
+    i = (i + 1) % kRing;
+  }
+  state.SetItemsProcessed(state.iterations() * kRing);
+}
+
 template <class T>
 void BM_GeneralGeometricProduct(benchmark::State& state) {
   const auto& in = inputs<T>();
@@ -155,15 +212,239 @@ BENCHMARK(BM_SandwichPoint<float>);
 BENCHMARK(BM_SandwichPlane<double>);
 BENCHMARK(BM_SandwichPlane<float>);
 BENCHMARK(BM_SandwichLine<double>);
+BENCHMARK(BM_SandwichLine<float>);
 BENCHMARK(BM_JoinThreePoints<double>);
 BENCHMARK(BM_JoinThreePoints<float>);
 BENCHMARK(BM_Exp<double>);
 BENCHMARK(BM_Exp<float>);
 BENCHMARK(BM_Log<double>);
 BENCHMARK(BM_Log<float>);
+BENCHMARK(BM_SandwichPointArray<double>);
+BENCHMARK(BM_SandwichPointArray<float>);
+BENCHMARK(BM_SandwichPlaneArray<double>);
+BENCHMARK(BM_SandwichPlaneArray<float>);
 BENCHMARK(BM_GeneralGeometricProduct<double>);
 BENCHMARK(BM_GeneralSandwichPoint<double>);
 
+#ifdef PGAMESH_BENCH_KLEIN
+// ---- klein on the float ring -------------------------------------------------------------------
+
+struct KleinInputs {
+  std::vector<kln::motor> motors;
+  std::vector<kln::point> points;
+  std::vector<kln::plane> planes;
+  std::vector<kln::line> lines;
+
+  KleinInputs() {
+    const auto& in = inputs<float>();
+    for (std::size_t i = 0; i < kRing; ++i) {
+      const Motor<float>& m = in.motors[i];
+      motors.emplace_back(m.s, m.e23, m.e31, m.e12, m.e01, m.e02, m.e03, m.e0123);
+      const Vec3<float> p = in.points[i].euclidean();
+      points.emplace_back(p.x, p.y, p.z);
+      const Plane<float>& v = in.planes[i];
+      planes.emplace_back(v.e1, v.e2, v.e3, v.e0);
+      const Line<float>& l = in.lines[i];
+      lines.emplace_back(l.e01, l.e02, l.e03, l.e23, l.e31, l.e12);
+    }
+  }
+};
+
+const KleinInputs& klein_inputs() {
+  static const KleinInputs in;
+  return in;
+}
+
+void BM_Klein_MotorTimesMotor(benchmark::State& state) {
+  const auto& in = klein_inputs();
+  std::size_t i = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(in.motors[i] * in.motors[(i + 1) % kRing]);
+    i = (i + 1) % kRing;
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
+void BM_Klein_SandwichPoint(benchmark::State& state) {
+  const auto& in = klein_inputs();
+  std::size_t i = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(in.motors[i](in.points[i]));
+    i = (i + 1) % kRing;
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
+void BM_Klein_SandwichPlane(benchmark::State& state) {
+  const auto& in = klein_inputs();
+  std::size_t i = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(in.motors[i](in.planes[i]));
+    i = (i + 1) % kRing;
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
+void BM_Klein_SandwichLine(benchmark::State& state) {
+  const auto& in = klein_inputs();
+  std::size_t i = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(in.motors[i](in.lines[i]));
+    i = (i + 1) % kRing;
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
+void BM_Klein_JoinThreePoints(benchmark::State& state) {
+  const auto& in = klein_inputs();
+  std::size_t i = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(in.points[i] & in.points[(i + 1) % kRing] &
+                             in.points[(i + 2) % kRing]);
+    i = (i + 1) % kRing;
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
+void BM_Klein_Exp(benchmark::State& state) {
+  const auto& in = klein_inputs();
+  std::size_t i = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(kln::exp(in.lines[i]));
+    i = (i + 1) % kRing;
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
+void BM_Klein_Log(benchmark::State& state) {
+  const auto& in = klein_inputs();
+  std::size_t i = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(kln::log(in.motors[i]));
+    i = (i + 1) % kRing;
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
+// klein's per-element loop over the ring of points: items = points.
+void BM_Klein_SandwichPointArray(benchmark::State& state) {
+  const auto& in = klein_inputs();
+  std::vector<kln::point> out(kRing);
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const kln::motor& m = in.motors[i];
+    for (std::size_t k = 0; k < kRing; ++k) out[k] = m(in.points[k]);
+    benchmark::DoNotOptimize(out.data());
+    benchmark::ClobberMemory();
+    i = (i + 1) % kRing;
+  }
+  state.SetItemsProcessed(state.iterations() * kRing);
+}
+
+// klein's per-element loop over the ring of planes: items = planes.
+void BM_Klein_SandwichPlaneArray(benchmark::State& state) {
+  const auto& in = klein_inputs();
+  std::vector<kln::plane> out(kRing);
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const kln::motor& m = in.motors[i];
+    for (std::size_t k = 0; k < kRing; ++k) out[k] = m(in.planes[k]);
+    benchmark::DoNotOptimize(out.data());
+    benchmark::ClobberMemory();
+    i = (i + 1) % kRing;
+  }
+  state.SetItemsProcessed(state.iterations() * kRing);
+}
+
+BENCHMARK(BM_Klein_MotorTimesMotor);
+BENCHMARK(BM_Klein_SandwichPoint);
+BENCHMARK(BM_Klein_SandwichPlane);
+BENCHMARK(BM_Klein_SandwichLine);
+BENCHMARK(BM_Klein_JoinThreePoints);
+BENCHMARK(BM_Klein_Exp);
+BENCHMARK(BM_Klein_Log);
+BENCHMARK(BM_Klein_SandwichPointArray);
+BENCHMARK(BM_Klein_SandwichPlaneArray);
+
+// ---- the same answers --------------------------------------------------------------------------
+
+// Counts the coefficients where klein and pgamesh (float) differ by more than 1e-4 relative to
+// the larger magnitude involved (both compute in float; the inputs are of order 1).
+struct Agreement {
+  const char* operation;
+  int mismatches = 0;
+  void expect(float ours, float theirs) {
+    const float scale = std::fmax(1.0f, std::fmax(std::fabs(ours), std::fabs(theirs)));
+    if (!(std::fabs(ours - theirs) <= 1e-4f * scale)) ++mismatches;
+  }
+  void expect(const Motor<float>& m, const kln::motor& k) {
+    expect(m.s, k.scalar()), expect(m.e01, k.e01()), expect(m.e02, k.e02());
+    expect(m.e03, k.e03()), expect(m.e12, k.e12()), expect(m.e31, k.e31());
+    expect(m.e23, k.e23()), expect(m.e0123, k.e0123());
+  }
+  void expect(const Line<float>& l, const kln::line& k) {
+    expect(l.e01, k.e01()), expect(l.e02, k.e02()), expect(l.e03, k.e03());
+    expect(l.e12, k.e12()), expect(l.e31, k.e31()), expect(l.e23, k.e23());
+  }
+  void expect(const Plane<float>& p, const kln::plane& k, float sign) {
+    expect(p.e0, sign * k.e0()), expect(p.e1, sign * k.e1()), expect(p.e2, sign * k.e2());
+    expect(p.e3, sign * k.e3());
+  }
+  void expect(const Point<float>& p, const kln::point& k) {
+    expect(p.e032, k.e032()), expect(p.e013, k.e013()), expect(p.e021, k.e021());
+    expect(p.e123, k.e123());
+  }
+  bool report() const {
+    std::printf("klein agrees with pgamesh on %-22s %s\n", operation,
+                mismatches == 0 ? "(1024 of 1024 inputs)" : "NO");
+    if (mismatches != 0) std::printf("  %d coefficients differ\n", mismatches);
+    return mismatches == 0;
+  }
+};
+
+// Every operation of the side-by-side on the whole float ring: klein's answer equals ours, with
+// the one sign of docs/conventions.md §4 (klein's point ∨ point ∨ point is our plane negated).
+bool same_answers() {
+  const auto& in = inputs<float>();
+  const auto& k = klein_inputs();
+  Agreement mm{"motor x motor"}, sp{"sandwich of a point"}, sv{"sandwich of a plane"},
+      sl{"sandwich of a line"}, j3{"join of three points"}, ex{"exp"}, lg{"log"}, pa{"point array"},
+      va{"plane array"};
+  std::vector<float> x(kRing), y(kRing), z(kRing), a(kRing), b(kRing), c(kRing), d(kRing);
+  apply_to_points(in.motors[7], in.px, in.py, in.pz, x, y, z);
+  apply_to_planes(in.motors[7], in.na, in.nb, in.nc, in.nd, a, b, c, d);
+  for (std::size_t i = 0; i < kRing; ++i) {
+    const std::size_t i1 = (i + 1) % kRing, i2 = (i + 2) % kRing;
+    mm.expect(in.motors[i] * in.motors[i1], k.motors[i] * k.motors[i1]);
+    sp.expect(apply(in.motors[i], in.points[i]), k.motors[i](k.points[i]));
+    sv.expect(apply(in.motors[i], in.planes[i]), k.motors[i](k.planes[i]), 1.0f);
+    sl.expect(apply(in.motors[i], in.lines[i]), k.motors[i](k.lines[i]));
+    j3.expect(join(in.points[i], in.points[i1], in.points[i2]),
+              k.points[i] & k.points[i1] & k.points[i2], -1.0f);
+    ex.expect(exp(in.lines[i]), kln::exp(k.lines[i]));
+    lg.expect(log(in.motors[i]), kln::log(k.motors[i]));
+    pa.expect(point(x[i], y[i], z[i]), k.motors[7](k.points[i]));
+    va.expect(plane(a[i], b[i], c[i], d[i]), k.motors[7](k.planes[i]), 1.0f);
+  }
+  bool ok = true;
+  for (const Agreement* g : {&mm, &sp, &sv, &sl, &j3, &ex, &lg, &pa, &va}) ok = g->report() && ok;
+  return ok;
+}
+#endif
+
 }  // namespace
 
-BENCHMARK_MAIN();
+int main(int argc, char** argv) {
+  // The input rings are built here, not inside the first benchmark that uses them, so that an
+  // instruction count of a benchmark function (compare_klein.sh, callgrind) is of its loop only.
+  inputs<double>(), inputs<float>();
+#ifdef PGAMESH_BENCH_KLEIN
+  klein_inputs();
+  if (!same_answers()) return 1;
+#endif
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

@@ -11,7 +11,7 @@ pkgs=(cmake ninja-build g++ make pkg-config libgtest-dev libgmock-dev libbenchma
 case "$what" in
   test) pkgs+=(clang libclang-rt-14-dev clang-format chromium curl python3-pytest python3-pytest-timeout) ;;
   bench) pkgs+=(admesh hyperfine libcgal-dev python3-vtk9 python3-stl python3-open3d python3-numpy time
-                python3-matplotlib assimp-utils) ;;
+                python3-matplotlib assimp-utils valgrind) ;;
 esac
 # The viewer's page needs node and npm (for three.js and, in tests, playwright-core): Debian's
 # only when the machine has none of its own.

@@ -9,6 +9,7 @@
 // live in pga3/ (docs/pga3.md).
 #pragma once
 
+#include "pgamesh/algebra/pga3/batch.hpp"
 #include "pgamesh/algebra/pga3/convert.hpp"
 #include "pgamesh/algebra/pga3/exp_log.hpp"
 #include "pgamesh/algebra/pga3/grades.hpp"

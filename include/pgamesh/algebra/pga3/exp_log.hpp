@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cmath>
+#include <type_traits>
 
 #include "pgamesh/algebra/pga3/grades.hpp"
 #include "pgamesh/algebra/pga3/linear.hpp"
@@ -23,29 +24,46 @@ template <class T>
 T sinc(T theta) {
   return theta == T(0) ? T(1) : std::sin(theta) / theta;
 }
-/// (cos θ − sinc θ)/θ²; below |θ| = 1 the Taylor series Σ_{k=1..10} (−1)^k 2k/(2k+1)! θ^(2k−2)
-/// (the direct form cancels for small θ: its error is about ε/θ²; the first omitted series term
-/// is below 4e−19 at θ = 1).
+/// (cos θ − sinc θ)/θ² from θ and the cos θ and sinc θ already at hand; below |θ| = 1 the Taylor
+/// series Σ_{k=1..10} (−1)^k 2k/(2k+1)! θ^(2k−2) (the direct form cancels for small θ: its error
+/// is about ε/θ²; the first omitted series term is below 4e−19 at θ = 1; float needs the first
+/// six terms). The coefficients are rounded once, at compile time, so the series costs a few
+/// multiply-adds and no division. For float and double both forms are computed and one is
+/// selected, without a branch: random angles straddle |θ| = 1 and a mispredicted branch cost more
+/// than the series.
+template <class T>
+T cos_minus_sinc_over_sq(T theta, T cos_theta, T sinc_theta) {
+  const T t2 = theta * theta;
+  // (−1)^k 2k/(2k+1)!, k = 1..10.
+  constexpr double kCoef[] = {-1.0 / 3.0,
+                              1.0 / 30.0,
+                              -1.0 / 840.0,
+                              1.0 / 45360.0,
+                              -1.0 / 3991680.0,
+                              1.0 / 518918400.0,
+                              -1.0 / 93405312000.0,
+                              1.0 / 22230464256000.0,
+                              -1.0 / 6758061133824000.0,
+                              1.0 / 2554547108585472000.0};
+  constexpr int kTerms = std::is_same_v<T, float> ? 6 : 10;
+  const auto series = [&] {
+    T sum = T(0);
+    for (int k = kTerms - 1; k >= 0; --k) sum = T(kCoef[k]) + t2 * sum;
+    return sum;
+  };
+  const bool small = std::abs(theta) < T(1);
+  if constexpr (std::is_floating_point_v<T>) {
+    // θ = 0 gives 0/0 in the unused direct form: harmless, it is not selected.
+    const T direct = (cos_theta - sinc_theta) / t2, approx = series();
+    return small ? approx : direct;
+  } else {
+    return small ? series() : (cos_theta - sinc_theta) / t2;
+  }
+}
+/// (cos θ − sinc θ)/θ².
 template <class T>
 T cos_minus_sinc_over_sq(T theta) {
-  const T t2 = theta * theta;
-  if (std::abs(theta) < T(1)) {
-    // Denominators (2k+1)!/(2k), k = 1..10.
-    constexpr double kDen[] = {3.0,
-                               30.0,
-                               840.0,
-                               45360.0,
-                               3991680.0,
-                               518918400.0,
-                               93405312000.0,
-                               22230464256000.0,
-                               6758061133824000.0,
-                               2554547108585472000.0};
-    T sum = T(0);
-    for (int k = 9; k >= 0; --k) sum = (k % 2 == 0 ? T(-1) : T(1)) / T(kDen[k]) + t2 * sum;
-    return sum;
-  }
-  return (std::cos(theta) - std::sin(theta) / theta) / t2;
+  return cos_minus_sinc_over_sq(theta, T(std::cos(theta)), sinc(theta));
 }
 }  // namespace detail
 
@@ -56,11 +74,14 @@ template <class T>
 Motor<T> exp(const Line<T>& b) {
   const Vec3<T> l = b.direction(), m = b.moment();
   const T theta = length(l);
-  const T sc = detail::sinc(theta), g = detail::cos_minus_sinc_over_sq(theta);
+  // One sin and one cos of the same angle: the compiler makes them a single sincos call.
+  const T cos_theta = std::cos(theta), sin_theta = std::sin(theta);
+  const T sc = theta == T(0) ? T(1) : sin_theta / theta;
+  const T g = detail::cos_minus_sinc_over_sq(theta, cos_theta, sc);
   const T lm = dot(l, m);      // = u·v with u = −l, v = m up to the sign absorbed below
   const Vec3<T> rot = sc * l;  // (e23, e31, e12) = −(u sinc θ)
   const Vec3<T> ideal = sc * m + (lm * g) * l;  // v sinc θ + u (u·v) g
-  return {std::cos(theta), ideal.x, ideal.y, ideal.z, rot.z, rot.y, rot.x, lm * sc};
+  return {cos_theta, ideal.x, ideal.y, ideal.z, rot.z, rot.y, rot.x, lm * sc};
 }
 
 /// log(M) of a normalized motor: the bivector B with exp(B) = M and half-angle
@@ -75,8 +96,9 @@ Line<T> log(const Motor<T>& mo) {
   Vec3<T> axis;
   T ratio;  // θ / sin θ
   if (sn > T(0)) {
-    axis = q.v / sn;
-    ratio = theta / sn;
+    const T inv = T(1) / sn;
+    axis = inv * q.v;
+    ratio = theta * inv;
   } else {
     const T cl = length(c.v);
     axis = cl > T(0) ? c.v / cl : Vec3<T>{T(1), T(0), T(0)};

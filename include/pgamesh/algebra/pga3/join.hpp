@@ -4,7 +4,10 @@
 // some, §4).
 #pragma once
 
+#include <type_traits>
+
 #include "pgamesh/algebra/pga3/grades.hpp"
+#include "pgamesh/algebra/pga3/simd.hpp"
 
 namespace pgamesh::pga3 {
 
@@ -43,10 +46,40 @@ constexpr T join(const Point<T>& v, const Plane<T>& p) {
   return -join(p, v);
 }
 
+namespace detail {
+#ifdef PGAMESH_PGA3_SIMD
+/// join(join(a, b), c) on four-lane vectors, summed in the same order (the same bits, up to the
+/// sign of a zero). The points' lanes (e021, e013, e032, e123) hold (z, y, x, w): in that order the
+/// cross product's j and k lanes are (2, 0, 1) and (1, 2, 0).
+template <class T>
+inline Plane<T> join_simd(const Point<T>& a, const Point<T>& b, const Point<T>& c) {
+  V4<T> va, vb, vc;
+  load_lanes<T>(a, 0, va), load_lanes<T>(b, 0, vb), load_lanes<T>(c, 0, vc);
+  const V4<T> d = PGAMESH_LANES(va, 3, 3, 3, 3) * vb - PGAMESH_LANES(vb, 3, 3, 3, 3) * va;
+  const V4<T> m = PGAMESH_LANES(va, 2, 0, 1, 3) * PGAMESH_LANES(vb, 1, 2, 0, 3) -
+                  PGAMESH_LANES(va, 1, 2, 0, 3) * PGAMESH_LANES(vb, 2, 0, 1, 3);
+  const V4<T> n = (PGAMESH_LANES(d, 2, 0, 1, 3) * PGAMESH_LANES(vc, 1, 2, 0, 3) -
+                   PGAMESH_LANES(d, 1, 2, 0, 3) * PGAMESH_LANES(vc, 2, 0, 1, 3)) +
+                  PGAMESH_LANES(vc, 3, 3, 3, 3) * m;
+  const V4<T> mp = m * vc;  // (m_z p_z, m_y p_y, m_x p_x, ·)
+  const V4<T> e0 = -((PGAMESH_LANES(mp, 2, 2, 2, 2) + PGAMESH_LANES(mp, 1, 1, 1, 1)) +
+                     PGAMESH_LANES(mp, 0, 0, 0, 0));
+  Plane<T> out;
+  store_lanes<T>(out, 0, PGAMESH_LANES2(e0, n, 0, 6, 5, 4));
+  return out;
+}
+#endif
+}  // namespace detail
+
 /// v0 ∨ v1 ∨ v2: the carrier of a triangle, normal (v1 − v0) × (v2 − v0), e0 coefficient −det
-/// (paper eq. 3.12, docs/conventions.md §5).
+/// (paper eq. 3.12, docs/conventions.md §5). float (and double under AVX) take the four-lane
+/// form of simd.hpp (the same values).
 template <class T>
 constexpr Plane<T> join(const Point<T>& a, const Point<T>& b, const Point<T>& c) {
+#ifdef PGAMESH_PGA3_SIMD
+  if constexpr (detail::kHasSimd<T>)
+    if (!std::is_constant_evaluated()) return detail::join_simd(a, b, c);
+#endif
   return join(join(a, b), c);
 }
 

@@ -4,9 +4,11 @@
 #pragma once
 
 #include <cmath>
+#include <type_traits>
 
 #include "pgamesh/algebra/pga3/grades.hpp"
 #include "pgamesh/algebra/pga3/quaternion.hpp"
+#include "pgamesh/algebra/pga3/simd.hpp"
 
 namespace pgamesh::pga3 {
 
@@ -28,13 +30,112 @@ constexpr Motor<T> motor_from(const Quat<T>& q, const Quat<T>& c) {
 }
 }  // namespace detail
 
+namespace detail {
+/// The geometric product A B of two motors, (q_a + ε c_a)(q_b + ε c_b) =
+/// q_a q_b + ε (q_a c_b + c_a q_b), for any scalar type.
+template <class T>
+constexpr Motor<T> geometric_product_generic(const Motor<T>& a, const Motor<T>& b) {
+  const auto qa = real_part(a), qb = real_part(b), ca = dual_part(a), cb = dual_part(b);
+  return motor_from(qa * qb, qa * cb + ca * qb);
+}
+
+#ifdef PGAMESH_PGA3_SIMD
+/// geometric_product_generic on four-lane vectors, with every coefficient summed in the same
+/// order (the same bits, up to the sign of a zero): with B = (e23, e31, e12) = −q_v and m = (e01,
+/// e02, e03) = c_v, the three quaternion products' vector parts are lane-wise
+///   q_a q_b → −(a_w B_b + b_w B_a) − (B_a,k B_b,j − B_a,j B_b,k)   (i, j, k cyclic),
+///   q_a c_b → (a_w m_b − b_p B_a) + (B_a,k m_b,j − B_a,j m_b,k),
+///   c_a q_b → (b_w m_a − a_p B_b) + (m_a,k B_b,j − m_a,j B_b,k),
+/// and their scalar parts share one vector (a_w b_w, a_w b_p, a_p b_w) ∓ the three dot products.
+/// Negations are exact, so moving them changes no bit but the sign of a zero sum.
+template <class T>
+inline Motor<T> geometric_product_simd(const Motor<T>& a, const Motor<T>& b) {
+  V4<T> alo, ahi, blo, bhi;  // (s, e01, e02, e03) and (e12, e31, e23, e0123)
+  load_lanes<T>(a, 0, alo), load_lanes<T>(a, 4, ahi), load_lanes<T>(b, 0, blo);
+  load_lanes<T>(b, 4, bhi);
+  const V4<T> aB = PGAMESH_LANES(ahi, 2, 1, 0, 3), bB = PGAMESH_LANES(bhi, 2, 1, 0, 3);
+  const V4<T> am = PGAMESH_LANES(alo, 1, 2, 3, 0), bm = PGAMESH_LANES(blo, 1, 2, 3, 0);
+  const V4<T> aw = PGAMESH_LANES(alo, 0, 0, 0, 0), bw = PGAMESH_LANES(blo, 0, 0, 0, 0);
+  const V4<T> ap = PGAMESH_LANES(ahi, 3, 3, 3, 3), bp = PGAMESH_LANES(bhi, 3, 3, 3, 3);
+  // (x, y, z) → (y, z, x) and (z, x, y): the j and k of lane i.
+  const V4<T> aBj = PGAMESH_LANES(aB, 1, 2, 0, 3), aBk = PGAMESH_LANES(aB, 2, 0, 1, 3);
+  const V4<T> bBj = PGAMESH_LANES(bB, 1, 2, 0, 3), bBk = PGAMESH_LANES(bB, 2, 0, 1, 3);
+  const V4<T> bmj = PGAMESH_LANES(bm, 1, 2, 0, 3), bmk = PGAMESH_LANES(bm, 2, 0, 1, 3);
+  const V4<T> amj = PGAMESH_LANES(am, 1, 2, 0, 3), amk = PGAMESH_LANES(am, 2, 0, 1, 3);
+  const V4<T> e = (aw * bB + bw * aB) + (aBk * bBj - aBj * bBk);  // (e23, e31, e12)
+  const V4<T> x = (aw * bm - bp * aB) + (aBk * bmj - aBj * bmk);
+  const V4<T> y = (bw * am - ap * bB) + (amk * bBj - amj * bBk);
+  const V4<T> m = x + y;  // (e01, e02, e03)
+  // Scalar parts: lanes (q_a q_b, q_a c_b, c_a q_b) of (a_w, a_w, a_p)(b_w, b_p, b_w) ∓ dots.
+  const V4<T> p1 = aB * bB, p2 = aB * bm, p3 = am * bB;
+  const V4<T> u = PGAMESH_LANES2(p1, p2, 0, 4, 1, 5), z = PGAMESH_LANES2(p1, p2, 2, 6, 2, 6);
+  const V4<T> tx = PGAMESH_LANES2(u, p3, 0, 1, 4, 4), ty = PGAMESH_LANES2(u, p3, 2, 3, 5, 5);
+  const V4<T> tz = PGAMESH_LANES2(z, p3, 0, 1, 6, 6);
+  const V4<T> w = PGAMESH_LANES2(alo, ahi, 0, 0, 7, 7) * PGAMESH_LANES2(blo, bhi, 0, 7, 0, 0) +
+                  ((tx + ty) + tz) * V4<T>{T(-1), T(1), T(1), T(1)};
+  const V4<T> pseudo = PGAMESH_LANES(w, 1, 1, 1, 1) + PGAMESH_LANES(w, 2, 2, 2, 2);
+  Motor<T> out;
+  store_lanes<T>(out, 0, PGAMESH_LANES2(w, m, 0, 4, 5, 6));
+  store_lanes<T>(out, 4, PGAMESH_LANES2(e, pseudo, 2, 1, 0, 4));
+  return out;
+}
+
+/// The Hamilton product of quaternions held as lanes (w, x, y, z), summed lane-uniformly:
+/// a_w b + a_x (−b_x, b_w, −b_z, b_y) + a_y (−b_y, b_z, b_w, −b_x) + a_z (−b_z, −b_y, b_x, b_w),
+/// left to right. Another summation order than Quat's operator* (quaternion.hpp), so the last
+/// bits may differ from it; used where no bits are promised (float, below).
+template <class T>
+[[gnu::always_inline]] inline void hamilton_lanes(const V4<T>& a, const V4<T>& b, V4<T>& out) {
+  const V4<T> b1 = PGAMESH_LANES(b, 1, 0, 3, 2) * V4<T>{T(-1), T(1), T(-1), T(1)};
+  const V4<T> b2 = PGAMESH_LANES(b, 2, 3, 0, 1) * V4<T>{T(-1), T(1), T(1), T(-1)};
+  const V4<T> b3 = PGAMESH_LANES(b, 3, 2, 1, 0) * V4<T>{T(-1), T(-1), T(1), T(1)};
+  out = ((PGAMESH_LANES(a, 0, 0, 0, 0) * b + PGAMESH_LANES(a, 1, 1, 1, 1) * b1) +
+         PGAMESH_LANES(a, 2, 2, 2, 2) * b2) +
+        PGAMESH_LANES(a, 3, 3, 3, 3) * b3;
+}
+
+/// The motor product with lane-uniform sums, as klein sums it: q_a q_b and q_a c_b + c_a q_b
+/// with q = (s, −e23, −e31, −e12) and c = (e0123, e01, e02, e03) in four lanes each. Fewer
+/// shuffles than geometric_product_simd, other rounding than geometric_product_generic (a few
+/// ulps); float only — double keeps the generic summation order, whose bits the mesh results
+/// depend on (docs/pga3.md "Speed").
+template <class T>
+inline Motor<T> geometric_product_lanes(const Motor<T>& a, const Motor<T>& b) {
+  V4<T> alo, ahi, blo, bhi;  // (s, e01, e02, e03), (e12, e31, e23, e0123)
+  load_lanes<T>(a, 0, alo), load_lanes<T>(a, 4, ahi), load_lanes<T>(b, 0, blo);
+  load_lanes<T>(b, 4, bhi);
+  const V4<T> flip = {T(1), T(-1), T(-1), T(-1)};
+  const V4<T> qa = PGAMESH_LANES2(alo, ahi, 0, 6, 5, 4) * flip;
+  const V4<T> qb = PGAMESH_LANES2(blo, bhi, 0, 6, 5, 4) * flip;
+  const V4<T> ca = PGAMESH_LANES2(alo, ahi, 7, 1, 2, 3), cb = PGAMESH_LANES2(blo, bhi, 7, 1, 2, 3);
+  V4<T> q, x, y;
+  hamilton_lanes<T>(qa, qb, q);
+  hamilton_lanes<T>(qa, cb, x);
+  hamilton_lanes<T>(ca, qb, y);
+  const V4<T> c = x + y;
+  const V4<T> qf = q * flip;  // (s, e23, e31, e12)
+  Motor<T> out;
+  store_lanes<T>(out, 0, PGAMESH_LANES2(qf, c, 0, 5, 6, 7));
+  store_lanes<T>(out, 4, PGAMESH_LANES2(qf, c, 3, 2, 1, 4));
+  return out;
+}
+#endif
+}  // namespace detail
+
 /// The geometric product A B of two motors, (q_a + ε c_a)(q_b + ε c_b) =
 /// q_a q_b + ε (q_a c_b + c_a q_b). As a motion, B acts first: (A B) X (A B)~ = A (B X B̃) Ã.
+/// float runs geometric_product_lanes, double the four-lane form under AVX (same values as the
+/// generic formula) and the generic formula otherwise (docs/pga3.md "Speed").
 template <class T>
 constexpr Motor<T> geometric_product(const Motor<T>& a, const Motor<T>& b) {
-  using detail::dual_part, detail::real_part;
-  const auto qa = real_part(a), qb = real_part(b), ca = dual_part(a), cb = dual_part(b);
-  return detail::motor_from(qa * qb, qa * cb + ca * qb);
+#ifdef PGAMESH_PGA3_SIMD
+  if constexpr (std::is_same_v<T, float>) {
+    if (!std::is_constant_evaluated()) return detail::geometric_product_lanes(a, b);
+  } else if constexpr (detail::kHasSimd<T>) {
+    if (!std::is_constant_evaluated()) return detail::geometric_product_simd(a, b);
+  }
+#endif
+  return detail::geometric_product_generic(a, b);
 }
 /// A * B = geometric_product(A, B): the motion B followed by A.
 template <class T>
@@ -103,30 +204,117 @@ constexpr Motor<T> translator(Vec3<T> t) {
   return {T(1), -t.x / 2, -t.y / 2, -t.z / 2, T(0), T(0), T(0), T(0)};
 }
 
+namespace detail {
+/// M X M̃ for a point, any scalar type (apply below).
+template <class T>
+constexpr Point<T> apply_generic(const Motor<T>& m, const Point<T>& x) {
+  const auto q = real_part(m), c = dual_part(m);
+  const T w = x.e123;
+  const Vec3<T> t = T(2) * (c.w * q.v - q.w * c.v + cross(c.v, q.v));
+  const Vec3<T> p = rotate(q, x.weighted()) + w * t;
+  return {p.z, p.y, p.x, dot4(q, q) * w};
+}
+/// M p M̃ for a plane, any scalar type (apply below).
+template <class T>
+constexpr Plane<T> apply_generic(const Motor<T>& m, const Plane<T>& p) {
+  const auto q = real_part(m), c = dual_part(m);
+  const Vec3<T> n = p.normal();
+  const Vec3<T> rn = rotate(q, n);
+  const T d =
+      dot4(q, q) * p.e0 + T(2) * (-c.w * dot(q.v, n) + q.w * dot(n, c.v) + dot(cross(q.v, n), c.v));
+  return {d, rn.x, rn.y, rn.z};
+}
+
+#ifdef PGAMESH_PGA3_SIMD
+/// apply_generic for points on four-lane vectors (x, y, z, ·), summed in the same order (same
+/// bits). With B = (e23, e31, e12) = −q_v, m = c_v: t = −2 ((c_w B + q_w m) + m × B) and
+/// q P q* = ((s P + 2 (B·P) B) − 2 q_w (B × P)), s = q_w² − B·B.
+template <class T>
+inline Point<T> apply_simd(const Motor<T>& mo, const Point<T>& x) {
+  V4<T> lo, hi, pt;  // (s, e01, e02, e03), (e12, e31, e23, e0123), (e021, e013, e032, e123)
+  load_lanes<T>(mo, 0, lo), load_lanes<T>(mo, 4, hi), load_lanes<T>(x, 0, pt);
+  const V4<T> b = PGAMESH_LANES(hi, 2, 1, 0, 3), m = PGAMESH_LANES(lo, 1, 2, 3, 0);
+  const V4<T> p = PGAMESH_LANES(pt, 2, 1, 0, 3), w = PGAMESH_LANES(pt, 3, 3, 3, 3);
+  const V4<T> qw = PGAMESH_LANES(lo, 0, 0, 0, 0), cw = PGAMESH_LANES(hi, 3, 3, 3, 3);
+  const V4<T> bj = PGAMESH_LANES(b, 1, 2, 0, 3), bk = PGAMESH_LANES(b, 2, 0, 1, 3);
+  const V4<T> mj = PGAMESH_LANES(m, 1, 2, 0, 3), mk = PGAMESH_LANES(m, 2, 0, 1, 3);
+  const V4<T> pj = PGAMESH_LANES(p, 1, 2, 0, 3), pk = PGAMESH_LANES(p, 2, 0, 1, 3);
+  // Lanes (B·B, B·P, B·B, B·P), each summed (x + y) + z.
+  const V4<T> bb = b * b, bp = b * p;
+  const V4<T> dots = (PGAMESH_LANES2(bb, bp, 0, 4, 0, 4) + PGAMESH_LANES2(bb, bp, 1, 5, 1, 5)) +
+                     PGAMESH_LANES2(bb, bp, 2, 6, 2, 6);
+  const V4<T> qw2 = qw * qw;
+  const V4<T> s = qw2 - PGAMESH_LANES(dots, 0, 0, 0, 0);
+  const V4<T> two = {T(2), T(2), T(2), T(2)};
+  const V4<T> t2 = two * ((cw * b + qw * m) + (mj * bk - mk * bj));  // −t
+  const V4<T> r =
+      ((s * p + (two * PGAMESH_LANES(dots, 1, 1, 1, 1)) * b) - (two * qw) * (bj * pk - bk * pj)) -
+      w * t2;
+  const V4<T> weight = (qw2 + dots) * w;  // lane 0: |q|² w
+  Point<T> out;
+  store_lanes<T>(out, 0, PGAMESH_LANES2(r, weight, 2, 1, 0, 4));
+  return out;
+}
+
+/// apply_generic for planes on four-lane vectors, summed in the same order (the same bits, up to
+/// the sign of a zero): normal
+/// ((s n + 2 (B·n) B) − 2 q_w (B × n)), offset (q_w² + B·B) d + 2 ((c_w (B·n) + q_w (n·m))
+/// − (B × n)·m).
+template <class T>
+inline Plane<T> apply_simd(const Motor<T>& mo, const Plane<T>& pl) {
+  V4<T> lo, hi, v;  // (s, e01, e02, e03), (e12, e31, e23, e0123), (e0, e1, e2, e3)
+  load_lanes<T>(mo, 0, lo), load_lanes<T>(mo, 4, hi), load_lanes<T>(pl, 0, v);
+  const V4<T> b = PGAMESH_LANES(hi, 2, 1, 0, 3), m = PGAMESH_LANES(lo, 1, 2, 3, 0);
+  const V4<T> n = PGAMESH_LANES(v, 1, 2, 3, 0);
+  const V4<T> qw = PGAMESH_LANES(lo, 0, 0, 0, 0), cw = PGAMESH_LANES(hi, 3, 3, 3, 3);
+  const V4<T> bj = PGAMESH_LANES(b, 1, 2, 0, 3), bk = PGAMESH_LANES(b, 2, 0, 1, 3);
+  const V4<T> nj = PGAMESH_LANES(n, 1, 2, 0, 3), nk = PGAMESH_LANES(n, 2, 0, 1, 3);
+  const V4<T> bxn = bj * nk - bk * nj;
+  // Lanes (B·B, B·n, n·m, (B × n)·m), each summed (x + y) + z.
+  const V4<T> p1 = b * b, p2 = b * n, p3 = n * m, p4 = bxn * m;
+  const V4<T> lo12 = PGAMESH_LANES2(p1, p2, 0, 4, 1, 5), lo34 = PGAMESH_LANES2(p3, p4, 0, 4, 1, 5);
+  const V4<T> hi12 = PGAMESH_LANES2(p1, p2, 2, 6, 2, 6), hi34 = PGAMESH_LANES2(p3, p4, 2, 6, 2, 6);
+  const V4<T> dots =
+      (PGAMESH_LANES2(lo12, lo34, 0, 1, 4, 5) + PGAMESH_LANES2(lo12, lo34, 2, 3, 6, 7)) +
+      PGAMESH_LANES2(hi12, hi34, 0, 1, 4, 5);
+  const V4<T> qw2 = qw * qw;
+  const V4<T> two = {T(2), T(2), T(2), T(2)};
+  const V4<T> r =
+      ((qw2 - PGAMESH_LANES(dots, 0, 0, 0, 0)) * n + (two * PGAMESH_LANES(dots, 1, 1, 1, 1)) * b) -
+      (two * qw) * bxn;
+  // Lane 0: (q_w² + B·B) d + 2 ((c_w (B·n) + q_w (n·m)) − (B × n)·m).
+  const V4<T> d =
+      (qw2 + dots) * v +
+      two * ((cw * PGAMESH_LANES(dots, 1, 1, 1, 1) + qw * PGAMESH_LANES(dots, 2, 2, 2, 2)) -
+             PGAMESH_LANES(dots, 3, 3, 3, 3));
+  Plane<T> out;
+  store_lanes<T>(out, 0, PGAMESH_LANES2(d, r, 0, 4, 5, 6));
+  return out;
+}
+#endif
+}  // namespace detail
+
 /// M X M̃ for a point X = w I3 − ε P: weight |q|² w, weighted position q P q* + w t with
 /// t = 2 (c_w q_v − q_w c_v + c_v × q_v) the translation (−2 vec(c q*)). For a normalized M,
 /// the rigid motion of the point (a direction, w = 0, is only rotated).
 template <class T>
 constexpr Point<T> apply(const Motor<T>& m, const Point<T>& x) {
-  using detail::dual_part, detail::real_part;
-  const auto q = real_part(m), c = dual_part(m);
-  const T w = x.e123;
-  const Vec3<T> t = T(2) * (c.w * q.v - q.w * c.v + cross(c.v, q.v));
-  const Vec3<T> p = detail::rotate(q, x.weighted()) + w * t;
-  return {p.z, p.y, p.x, dot4(q, q) * w};
+#ifdef PGAMESH_PGA3_SIMD
+  if constexpr (detail::kHasSimd<T>)
+    if (!std::is_constant_evaluated()) return detail::apply_simd(m, x);
+#endif
+  return detail::apply_generic(m, x);
 }
 
 /// M p M̃ for a plane p = n + d e0: normal q n q*, e0 coefficient |q|² d + 2 Re(q n c*)
 /// (= d − n·t for a unit rotation-free motor translating by t).
 template <class T>
 constexpr Plane<T> apply(const Motor<T>& m, const Plane<T>& p) {
-  using detail::dual_part, detail::real_part;
-  const auto q = real_part(m), c = dual_part(m);
-  const Vec3<T> n = p.normal();
-  const Vec3<T> rn = detail::rotate(q, n);
-  const T d =
-      dot4(q, q) * p.e0 + T(2) * (-c.w * dot(q.v, n) + q.w * dot(n, c.v) + dot(cross(q.v, n), c.v));
-  return {d, rn.x, rn.y, rn.z};
+#ifdef PGAMESH_PGA3_SIMD
+  if constexpr (detail::kHasSimd<T>)
+    if (!std::is_constant_evaluated()) return detail::apply_simd(m, p);
+#endif
+  return detail::apply_generic(m, p);
 }
 
 /// M L M̃ for a line L = (0, −l) + ε (0, m): direction q l q*, moment q m q* − 2 vec(q l c*)
