@@ -121,7 +121,6 @@ std::string props_json(const Analysis& r) {
   j["volume_valid"] = r.volume_valid ? Json(*r.volume_valid) : Json(nullptr);
   j["reasons"] = json_strings(r.reasons);
   j["warnings"] = json_strings(r.warnings);
-  j["unit"] = r.unit == LengthUnit::unspecified ? Json(nullptr) : Json(unit_name(r.unit));
   Json parts = Json::array();
   for (const PartAnalysis& p : r.parts) parts.push_back(part_json(p));
   j["parts"] = std::move(parts);

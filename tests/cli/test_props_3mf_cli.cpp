@@ -52,14 +52,14 @@ TEST(Props3mfCli, JsonAddsUnitAndPartsKeepingTheOtherKeys) {
   EXPECT_EQ(j["parts"][1]["components"], 1);
 }
 
-TEST(Props3mfCli, FilesWithoutAUnitOrPartsSayNothingOfThem) {
+TEST(Props3mfCli, FilesWithoutAUnitAreUnitlessAndHaveNoParts) {
   const TempFile file(".obj", write_mesh_bytes(box_mesh(1, 2, 3), MeshFormat::obj));
   const CliRun text = run_cli("props \"" + file.path() + "\"");
   ASSERT_EQ(text.status, 0) << text.err;
-  EXPECT_EQ(text.out.find("\nunit "), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("\nunit              unitless"), std::string::npos) << text.out;
   EXPECT_EQ(text.out.find("^3"), std::string::npos) << text.out;
   const json j = parse_json(run_cli("props \"" + file.path() + "\" --json").out);
-  EXPECT_TRUE(j["unit"].is_null());
+  EXPECT_EQ(j["unit"], "unitless");
   EXPECT_TRUE(j["parts"].empty());
 }
 
