@@ -84,7 +84,7 @@ TEST(TopologyPolygons, RandomSoupsMatchTheReference) {
 TEST(TopologyPolygons, LargeSoupsTakeTheParallelPath) {
   // 30 000 faces on 50 vertices: the edge pass counts, fills and groups on two threads sharing one
   // union–find while the faces are tallied on a third; every vertex is a large fan. Without the
-  // search for intersecting faces: nearly every pair of these faces meets (10^8 pairs).
+  // search for intersecting faces: most pairs of these faces meet (some 10^8).
   TopologyOptions edges_only;
   edges_only.self_intersections = false;
   for (std::uint32_t seed = 1; seed <= 2; ++seed) {

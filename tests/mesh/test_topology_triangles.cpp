@@ -133,7 +133,7 @@ TEST(TopologyTriangles, LargeSoupsTakeTheParallelEdgePass) {
   // 20 000 random triangles on 35 vertices: two threads count, fill and group the half-edges
   // (every vertex a large fan, the split between the threads inside the vertex range) and share
   // one union–find; the report must be the sequential reference's. Without the search for
-  // intersecting faces: nearly every pair of these triangles meets (10^8 pairs).
+  // intersecting faces: most pairs of these triangles meet (some 10^8).
   TopologyOptions edges_only;
   edges_only.self_intersections = false;
   for (std::uint32_t seed = 1; seed <= 2; ++seed) {
