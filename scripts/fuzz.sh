@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# Runs every libFuzzer harness (build/sanitize/fuzz/fuzz_read_*, built with the tests by `cmake
+# Runs every libFuzzer harness (build/sanitize/fuzz/fuzz_*, built with the tests by `cmake
 # --preset sanitize && cmake --build --preset sanitize`): first once over every file of its seed
 # corpus (the replay: each seed, and each regression input kept there, is a test), then for SECONDS
-# on a scratch copy of it fuzz/corpus/<format>/ (the auto-detecting harness gets all of them). As
+# on a scratch copy of it fuzz/corpus/<format>/ (the auto-detecting harness gets all of them;
+# fuzz_self_intersections, fuzz/corpus/self_intersections). As
 # many harnesses run at once as there are cores. The seeds in the repository are never modified.
 # Crashes, leaks, timeouts (10 s) and RSS above 2 GB fail the run; the reproducer is left in
 # build/sanitize/fuzz-artifacts/. Usage: scripts/fuzz.sh [SECONDS]  (default 30)
@@ -13,7 +14,7 @@ bin=build/sanitize/fuzz
 work=build/sanitize/fuzz-corpus-work
 artifacts=build/sanitize/fuzz-artifacts
 shopt -s nullglob
-harnesses=("$bin"/fuzz_read_*)
+harnesses=("$bin"/fuzz_*)
 if [ ${#harnesses[@]} -eq 0 ]; then
   echo "fuzz.sh: no harnesses in $bin; build them with: cmake --preset sanitize && cmake --build --preset sanitize" >&2
   exit 1
@@ -25,6 +26,7 @@ fuzz_one() {
   local h=$1 name format
   name=$(basename "$h")
   format=${name#fuzz_read_}
+  format=${format#fuzz_}  # fuzz_self_intersections: its own corpus
   rm -rf "${work:?}/$format"
   mkdir -p "$work/$format"
   if [ -d "fuzz/corpus/$format" ]; then
