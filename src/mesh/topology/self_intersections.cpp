@@ -157,10 +157,15 @@ class FanHierarchy {
     for (int a = 1; a < 3; ++a)
       if (centres.hi[a] - centres.lo[a] > centres.hi[axis] - centres.lo[axis]) axis = a;
     const std::uint32_t middle = first + (end - first) / 2;
-    std::nth_element(items_.begin() + first, items_.begin() + middle, items_.begin() + end,
-                     [axis](const FanItem& x, const FanItem& y) {
-                       return x.box.lo[axis] + x.box.hi[axis] < y.box.lo[axis] + y.box.hi[axis];
-                     });
+    // Twice the centre; a box from −∞ to +∞ (corners beyond the float range on both sides) sorts
+    // as 0, so the order stays a strict weak one.
+    auto centre = [axis](const FanItem& x) {
+      const float c = x.box.lo[axis] + x.box.hi[axis];
+      return c == c ? c : 0.0f;
+    };
+    std::nth_element(
+        items_.begin() + first, items_.begin() + middle, items_.begin() + end,
+        [&centre](const FanItem& x, const FanItem& y) { return centre(x) < centre(y); });
     const auto left = static_cast<std::uint32_t>(nodes_.size());
     nodes_[node].left = left;
     nodes_.push_back({});
