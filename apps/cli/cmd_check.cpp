@@ -1,7 +1,7 @@
 // `pgamesh check FILE [--json] [--weld-tolerance T] [--area-threshold R] [--max-list N]
-// [--fix-orientation] [--output OUT]]`: the topology of a mesh (docs/topology.md). The report is
-// the result, so an open or broken mesh still exits 0; unreadable input exits 1 with the reader's
-// error.
+// [--no-self-intersections] [--fix-orientation] [--output OUT]]`: the topology of a mesh
+// (docs/topology.md). The report is the result, so an open or broken mesh still exits 0; unreadable
+// input exits 1 with the reader's error.
 #include <algorithm>
 #include <cstdio>
 #include <exception>
@@ -100,6 +100,15 @@ std::string readable_report(const Mesh& mesh, const MeshSource& source, const An
   faces("zero-area", r.zero_area_list, r.zero_area_faces);
   faces("nearly zero-area", r.small_area_list, r.small_area_faces);
   faces("duplicated", r.duplicated_list, r.duplicated_faces);
+  if (r.self_intersections_checked) {
+    append(out, "  self-intersections  %zu face pairs\n", r.self_intersecting_pairs);
+    for (const SelfIntersection& s : r.self_intersection_list) {
+      append(out, "    faces %u and %u near ", s.face0, s.face1);
+      print_vec(out, s.point);
+      append(out, "\n");
+    }
+    if (r.self_intersecting_pairs > r.self_intersection_list.size()) append(out, "    ...\n");
+  }
   append(out, "  components          %zu (%zu closed", r.components, r.closed_components);
   if (r.cavity_components)
     append(out, ", %zu %s", r.cavity_components, r.cavity_components == 1 ? "cavity" : "cavities");
@@ -212,8 +221,8 @@ void add_check_command(CLI::App& app) {
       "Topology of a mesh: welds coincident vertices, then reports boundary edges and loops\n"
       "(each with its vector area, area and perimeter), the gap 1/2|sum F| and the range of\n"
       "volumes that closing the holes could give, non-manifold and inconsistently oriented\n"
-      "edges, zero-area and duplicated faces, connected components, and whether volume,\n"
-      "centre of mass and inertia are meaningful.");
+      "edges, zero-area and duplicated faces, intersecting faces, connected components, and\n"
+      "whether volume, centre of mass and inertia are meaningful.");
   sub->footer(
       "Exit status: 0 whatever the mesh is like; 1 when the file cannot be read; 2 for bad\n"
       "options.");
@@ -233,6 +242,10 @@ void add_check_command(CLI::App& app) {
   add_count(*sub, "--max-list", o->list_cap,
             "locations listed per list (default 20; counts are complete)", 0,
             std::numeric_limits<std::size_t>::max());
+  sub->add_flag_callback(
+      "--no-self-intersections", [o] { o->topology.self_intersections = false; },
+      "do not look for intersecting faces (the longest step of the\n"
+      "topology on large meshes): the volume is judged without it");
   sub->add_flag("--fix-orientation", o->fix,
                 "reverse faces to agree with their neighbours and turn closed\n"
                 "parts outward; reports the faces flipped, then the repaired mesh");

@@ -155,6 +155,7 @@ void write_header(Json& w, const Options& o, const Analysis& analysis, const Gau
                        {"nonmanifold_edges", r.nonmanifold_edges},
                        {"inconsistent_edges", r.inconsistent_edges},
                        {"gap_area", json_number(r.gap_area)},
+                       {"self_intersecting_pairs", r.self_intersecting_pairs},
                        {"notes", json_strings(r.notes)}};
   w["volume_valid"] = check.fit;
   w["reasons"] = json_strings(check.problems);

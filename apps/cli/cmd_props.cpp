@@ -134,6 +134,10 @@ void add_props_command(CLI::App& app) {
                 "skip the weld/edge pass (STL, binary or ASCII, is then streamed\n"
                 "from the mapped file without building a mesh; a PLY's faces\n"
                 "are summed as they are read, only its vertices kept)");
+  sub->add_flag_callback(
+      "--no-self-intersections", [o] { o->analysis.topology_options.self_intersections = false; },
+      "do not look for intersecting faces (the longest step of the\n"
+      "topology on large meshes): the volume is judged without it");
   add_number(*sub, "--weld-tolerance", o->analysis.topology_options.weld_tolerance,
              "weld vertices closer than T for the topology (default 0: exact)", 0.0)
       ->type_name("T");

@@ -101,6 +101,19 @@ Json check_fields(const Mesh& mesh, const MeshSource& source, const Analysis& an
                                {"small_area_list", face_list(r.small_area_list, cap)}};
   j["duplicated_faces"] = r.duplicated_faces;
   j["duplicated_face_list"] = face_list(r.duplicated_list, cap);
+  // Self-intersections: null when not looked for.
+  if (r.self_intersections_checked) {
+    j["self_intersecting_pairs"] = r.self_intersecting_pairs;
+    Json pairs = Json::array();
+    for (std::size_t i = 0; i < r.self_intersection_list.size() && i < cap; ++i) {
+      const SelfIntersection& s = r.self_intersection_list[i];
+      pairs.push_back(Json{{"face0", s.face0}, {"face1", s.face1}, {"point", json_vec3(s.point)}});
+    }
+    j["self_intersection_list"] = std::move(pairs);
+  } else {
+    j["self_intersecting_pairs"] = nullptr;
+    j["self_intersection_list"] = Json::array();
+  }
   // Components.
   j["components"] = r.components;
   j["closed_components"] = r.closed_components;

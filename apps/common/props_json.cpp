@@ -115,6 +115,8 @@ std::string props_json(const Analysis& r) {
                          {"components", t.components},
                          {"closed_components", t.closed_components},
                          {"volume_range", json_range(t.volume_min, t.volume_max)}};
+    j["topology"]["self_intersecting_pairs"] =
+        t.self_intersections_checked ? Json(t.self_intersecting_pairs) : Json(nullptr);
   } else {
     j["topology"] = nullptr;
   }

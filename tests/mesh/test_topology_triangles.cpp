@@ -132,10 +132,13 @@ TEST(TopologyTriangles, LargeMeshesTakeTheTwoThreadPath) {
 TEST(TopologyTriangles, LargeSoupsTakeTheParallelEdgePass) {
   // 20 000 random triangles on 35 vertices: two threads count, fill and group the half-edges
   // (every vertex a large fan, the split between the threads inside the vertex range) and share
-  // one union–find; the report must be the sequential reference's.
+  // one union–find; the report must be the sequential reference's. Without the search for
+  // intersecting faces: most pairs of these triangles meet (some 10^8).
+  TopologyOptions edges_only;
+  edges_only.self_intersections = false;
   for (std::uint32_t seed = 1; seed <= 2; ++seed) {
     SCOPED_TRACE(seed);
-    const TopologyReport r = expect_triangle_pass(grid_soup(seed, 20000));
+    const TopologyReport r = expect_triangle_pass(grid_soup(seed, 20000), edges_only);
     EXPECT_GT(r.nonmanifold_edges, 0u);
     EXPECT_GT(r.duplicated_faces, 0u);
     EXPECT_GT(r.collapsed_faces, 0u);

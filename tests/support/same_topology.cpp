@@ -89,6 +89,17 @@ void expect_same_report(const TopologyReport& a, const TopologyReport& b) {
     EXPECT_EQ(x.cavity, y.cavity);
     EXPECT_EQ(x.inward, y.inward);
   }
+  EXPECT_EQ(a.self_intersections_checked, b.self_intersections_checked);
+  EXPECT_EQ(a.self_intersecting_pairs, b.self_intersecting_pairs);
+  ASSERT_EQ(a.self_intersection_list.size(), b.self_intersection_list.size());
+  for (std::size_t i = 0; i < a.self_intersection_list.size(); ++i) {
+    const SelfIntersection &x = a.self_intersection_list[i], &y = b.self_intersection_list[i];
+    EXPECT_EQ(x.face0, y.face0);
+    EXPECT_EQ(x.face1, y.face1);
+    EXPECT_SAME(x.point.x, y.point.x);
+    EXPECT_SAME(x.point.y, y.point.y);
+    EXPECT_SAME(x.point.z, y.point.z);
+  }
   EXPECT_EQ(a.volume_valid, b.volume_valid);
   EXPECT_EQ(a.notes, b.notes);
 }

@@ -156,6 +156,7 @@ RepairReport repair(Mesh& mesh, const RepairOptions& options) {
   {
     TopologyOptions t;
     t.list_cap = 0;
+    t.self_intersections = false;  // only the loops are wanted here
     const TopologyReport r = analyze_topology(m, t);
     const Mesh rims = m;  // the corners the loops name
     // A rim that is one face's outline (a lone face, a flap) is no hole: its cap would be that

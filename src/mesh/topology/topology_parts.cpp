@@ -4,13 +4,16 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <span>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "pgamesh/core/bounding_box.hpp"
 #include "pgamesh/geometry/carrier.hpp"
 #include "pgamesh/geometry/gap.hpp"
 #include "pgamesh/geometry/polygon_face.hpp"
+#include "pgamesh/mesh/topology/self_intersections.hpp"
 #include "pgamesh/mesh/topology/shell_nesting.hpp"
 
 namespace pgamesh::detail {
@@ -55,10 +58,35 @@ void write_notes(TopologyReport& r) {
                       " closed components face the wrong way for their nesting (an outer skin or "
                       "island with negative volume, or a cavity with positive volume; "
                       "--fix-orientation reverses them)");
+  if (r.self_intersecting_pairs > 0)
+    r.notes.push_back("self-intersecting: " + n(r.self_intersecting_pairs) +
+                      " face pairs intersect; the volume counts the overlap twice or not at all, "
+                      "so volume, centre of mass and inertia are not those of a solid");
   if (r.zero_area_faces + r.small_area_faces > 0)
     r.notes.push_back("degenerate faces: " + n(r.zero_area_faces) + " with zero area, " +
                       n(r.small_area_faces) + " nearly zero; they do not change area or volume");
   if (r.components > 1) r.notes.push_back(n(r.components) + " connected components");
+}
+
+// The self-intersections of the welded faces (self_intersections.hpp). A pass that keeps no corner
+// array (the PLY pass) has them read once more through the lookup.
+void find_face_intersections(TopologyTally& t) {
+  TopologyReport& r = t.r;
+  const WeldedFaces& mesh = t.mesh;
+  std::vector<std::uint32_t> looked_up;
+  std::span<const std::uint32_t> corners = mesh.corners;
+  if (corners.empty() && r.faces > 0) {
+    const std::size_t count = mesh.face_offsets.empty() ? 3 * r.faces : mesh.face_offsets.back();
+    looked_up.resize(count);
+    for (std::size_t c = 0; c < count; ++c)
+      looked_up[c] = mesh.corner_lookup(static_cast<std::uint32_t>(c));
+    corners = looked_up;
+  }
+  SelfIntersections found =
+      find_self_intersections(mesh.positions, corners, mesh.face_offsets, t.cap);
+  r.self_intersections_checked = true;
+  r.self_intersecting_pairs = found.pairs;
+  r.self_intersection_list = std::move(found.list);
 }
 
 // The mean of k corners, corner(i) the i-th.
@@ -360,8 +388,10 @@ void finish_report(TopologyTally& t,
   r.boundary_loops = std::move(loops);
   for (const BoundaryLoop& loop : r.boundary_loops) r.loops_area += loop.area;
 
+  if (t.self_intersections) find_face_intersections(t);
+
   r.volume_valid = r.faces > 0 && r.boundary_edges == 0 && r.orientation_consistent &&
-                   r.duplicated_area_faces == 0;
+                   r.duplicated_area_faces == 0 && r.self_intersecting_pairs == 0;
   write_notes(r);
 }
 

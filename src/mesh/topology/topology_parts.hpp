@@ -45,12 +45,17 @@ struct WeldedFaces {
 // The sums a report is built from, face by face and edge by edge.
 struct TopologyTally {
   TopologyTally(TopologyReport& report, const WeldedFaces& faces, const TopologyOptions& options)
-      : r(report), mesh(faces), cap(options.list_cap), area_threshold(options.area_threshold) {}
+      : r(report),
+        mesh(faces),
+        cap(options.list_cap),
+        area_threshold(options.area_threshold),
+        self_intersections(options.self_intersections) {}
 
   TopologyReport& r;
   const WeldedFaces& mesh;
   std::size_t cap;
   double area_threshold;
+  bool self_intersections;                   // finish_report looks for them
   std::vector<ComponentSummary> components;  // first_face and faces filled by the caller
   std::vector<double> area2, volume6;        // per component, Σ ‖F‖ and Σ o ∨ F
   // Face → component (no_edge: none), kept by tally_component_sums for the nesting of closed
@@ -96,8 +101,8 @@ void tally_edge(TopologyTally& t, std::uint32_t v0, std::uint32_t v1, std::uint3
 
 // After every face and edge: totals, gap and volume range, closedness, components and their
 // nesting (t.face_component must still be alive when two or more are closed), the duplicated
-// faces (face, earlier face with the same vertices; ascending by face), the boundary loops and the
-// notes.
+// faces (face, earlier face with the same vertices; ascending by face), the boundary loops, the
+// self-intersections when asked for (the faces' corners read through t.mesh) and the notes.
 void finish_report(TopologyTally& t,
                    std::span<const std::pair<std::uint32_t, std::uint32_t>> duplicates,
                    std::vector<BoundaryLoop> loops);

@@ -14,6 +14,7 @@
 #include "pgamesh/core/vec3.hpp"
 #include "pgamesh/mesh/topology/boundary_loops.hpp"
 #include "pgamesh/mesh/topology/edges.hpp"
+#include "pgamesh/mesh/topology/self_intersections.hpp"
 
 namespace pgamesh {
 
@@ -21,6 +22,9 @@ struct TopologyOptions {
   double weld_tolerance = 0;     // 0 = weld bitwise-equal coordinates only (weld.hpp)
   double area_threshold = 1e-9;  // a face is "small" when area ≤ this × (its longest side)²
   std::size_t list_cap = 20;     // at most this many locations per list (counts are never capped)
+  // Also look for faces that intersect (self_intersections.hpp); a mesh with any is not a solid.
+  // Costs about as much as the rest of the pass again (docs/topology.md, "Self-intersections").
+  bool self_intersections = true;
 };
 
 // An edge, named by the input vertices that represent its welded ends.
@@ -104,9 +108,14 @@ struct TopologyReport {
   std::size_t inward_components = 0;  // closed components oriented against their depth (inward)
   std::vector<ComponentSummary> component_list;
 
+  // Self-intersections (self_intersections.hpp), when TopologyOptions::self_intersections.
+  bool self_intersections_checked = false;
+  std::size_t self_intersecting_pairs = 0;  // face pairs that intersect (never capped)
+  std::vector<SelfIntersection> self_intersection_list;
+
   // Whether volume, centre of mass and inertia are meaningful: no boundary, consistent
-  // orientation, no duplicated faces of non-zero area, at least one face. Notes say why not, in
-  // plain words.
+  // orientation, no duplicated faces of non-zero area, no self-intersection (when checked), at
+  // least one face. Notes say why not, in plain words.
   bool volume_valid = false;
   std::vector<std::string> notes;
 
