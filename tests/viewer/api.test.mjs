@@ -1,7 +1,9 @@
 // The server of `pgamesh serve`, over HTTP on loopback: routes, status codes, limits, bad input,
 // path traversal, methods, a bounded burst of concurrent requests, clean shutdown.
 import assert from 'node:assert/strict';
-import { readFileSync } from 'node:fs';
+import { readFileSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
 import { after, before, describe, test } from 'node:test';
 
 import {
@@ -362,6 +364,31 @@ describe('fuel', () => {
     const r2 = await getJson(`/api/mesh/${inv.id}/fuel?level=0.5`);
     assert.equal(r2.status, 422);
     assert.match(r2.body.error, /inside out/);
+  });
+
+  test('check lists intersecting faces: two overlapping cubes, as pgamesh check finds them',
+       async () => {
+    const cube = (o) => {
+      const v = [];
+      for (const z of [0, 2]) for (const y of [0, 2]) for (const x of [0, 2])
+        v.push(`v ${x + o} ${y + o} ${z + o}`);
+      return v.join('\n') + '\n';
+    };
+    // Faces of a cube with vertices 1..8 (x fastest), outward; the second cube adds 8.
+    const faces = (k) => [[1, 3, 4, 2], [5, 6, 8, 7], [1, 2, 6, 5], [3, 7, 8, 4], [1, 5, 7, 3],
+                          [2, 4, 8, 6]].map((f) => 'f ' + f.map((i) => i + k).join(' ')).join('\n');
+    const text = cube(0) + cube(1) + faces(0) + '\n' + faces(8) + '\n';
+    const { id } = await (await upload(text, 'overlap.obj')).json();
+    const c = await getJson(`/api/mesh/${id}/check`);
+    assert.equal(c.status, 200);
+    const file = join(tmpdir(), `pgamesh-overlap-${process.pid}.obj`);
+    writeFileSync(file, text);
+    const cli = JSON.parse((await runCli(['check', file, '--json'])).stdout);
+    assert.ok(cli.self_intersecting_pairs > 0);
+    assert.equal(c.body.self_intersecting_pairs, cli.self_intersecting_pairs);
+    const p = await getJson(`/api/mesh/${id}/props`);
+    assert.equal(p.body.volume_valid, false);
+    assert.ok(p.body.reasons.some((r) => /self-intersecting/.test(r)), p.body.reasons.join('; '));
   });
 
   test('an upload closed only by a weld is gauged with weld_tolerance', async (t) => {

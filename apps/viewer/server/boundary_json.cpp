@@ -40,6 +40,7 @@ std::string boundary_json(const TopologyReport& t) {
   w["closed_components"] = t.closed_components;
   w["cavity_components"] = t.cavity_components;
   w["inward_components"] = t.inward_components;
+  w["self_intersecting_pairs"] = t.self_intersecting_pairs;
   w["notes"] = cli::json_strings(t.notes);
   return cli::json_text(w);
 }

@@ -71,6 +71,8 @@ export class PropsPanel {
     add(c.inconsistent_edges, `${plural(c.inconsistent_edges, 'inconsistently oriented edge')} ` +
         '(flipped faces)', 'inconsistent');
     add(c.inward_components, `${plural(c.inward_components, 'closed part')} facing inward`);
+    add(c.self_intersecting_pairs,
+        `${plural(c.self_intersecting_pairs, 'pair')} of intersecting faces`);
     add(c.duplicated_faces, plural(c.duplicated_faces, 'duplicated face'));
     add(c.zero_area_faces, plural(c.zero_area_faces, 'zero-area face'));
     if (c.cavity_components > 0)
@@ -90,6 +92,7 @@ export class PropsPanel {
       boundary_edges: c.boundary_edges, nonmanifold_edges: c.nonmanifold_edges,
       inconsistent_edges: c.inconsistent_edges, inward_components: c.inward_components,
       duplicated_faces: c.duplicated_faces, zero_area_faces: c.zero_area_faces,
+      self_intersecting_pairs: c.self_intersecting_pairs,
     });
     const repairable = p.volume_valid === false;
     document.getElementById('repair-button').hidden = !repairable;
