@@ -101,7 +101,8 @@ std::string readable_report(const Mesh& mesh, const MeshSource& source, const An
   faces("nearly zero-area", r.small_area_list, r.small_area_faces);
   faces("duplicated", r.duplicated_list, r.duplicated_faces);
   if (r.self_intersections_checked) {
-    append(out, "  self-intersections  %zu face pairs\n", r.self_intersecting_pairs);
+    append(out, "  self-intersections  %s%zu face pairs\n",
+           r.self_intersections_complete ? "" : "at least ", r.self_intersecting_pairs);
     for (const SelfIntersection& s : r.self_intersection_list) {
       append(out, "    faces %u and %u near ", s.face0, s.face1);
       print_vec(out, s.point);

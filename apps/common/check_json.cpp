@@ -104,6 +104,7 @@ Json check_fields(const Mesh& mesh, const MeshSource& source, const Analysis& an
   // Self-intersections: null when not looked for.
   if (r.self_intersections_checked) {
     j["self_intersecting_pairs"] = r.self_intersecting_pairs;
+    j["self_intersections_complete"] = r.self_intersections_complete;
     Json pairs = Json::array();
     for (std::size_t i = 0; i < r.self_intersection_list.size() && i < cap; ++i) {
       const SelfIntersection& s = r.self_intersection_list[i];
@@ -112,6 +113,7 @@ Json check_fields(const Mesh& mesh, const MeshSource& source, const Analysis& an
     j["self_intersection_list"] = std::move(pairs);
   } else {
     j["self_intersecting_pairs"] = nullptr;
+    j["self_intersections_complete"] = nullptr;
     j["self_intersection_list"] = Json::array();
   }
   // Components.

@@ -252,6 +252,8 @@ SelfIntersections find_self_intersections(std::span<const Vec3d> positions,
   const auto n = static_cast<std::uint32_t>(bvh.size());
   constexpr std::uint32_t chunk = 1024;
   std::atomic<std::uint32_t> next_chunk{0};
+  std::atomic<std::size_t> found_pairs{0};  // both threads, for the stop at the bound
+  std::atomic<bool> stop{false};
   struct Found {
     std::size_t count = 0;
     std::priority_queue<std::uint64_t> lowest;
@@ -261,7 +263,7 @@ SelfIntersections find_self_intersections(std::span<const Vec3d> positions,
     for (;;) {
       const std::uint32_t start = next_chunk.fetch_add(chunk);
       if (start >= n) break;
-      for (std::uint32_t i = start; i < std::min(n, start + chunk); ++i) {
+      for (std::uint32_t i = start; i < std::min(n, start + chunk) && !stop; ++i) {
         const detail::IndexedTriangle t = bvh.triangle(i);
         bvh.query(i, stack, [&](std::uint32_t j) {
           if (!detail::triangles_intersect(t, bvh.triangle(j))) return;
@@ -269,6 +271,7 @@ SelfIntersections find_self_intersections(std::span<const Vec3d> positions,
           if (p.face > q.face) std::swap(p, q);
           if (!first_meeting(p.face, p.fan_index, q.face, q.fan_index)) return;
           ++found.count;
+          if (found_pairs.fetch_add(1) + 1 >= max_counted_intersections) stop = true;
           const std::uint64_t key = std::uint64_t{p.face} << 32 | q.face;
           if (found.lowest.size() < list_cap) {
             found.lowest.push(key);
@@ -284,6 +287,7 @@ SelfIntersections find_self_intersections(std::span<const Vec3d> positions,
   detail::run_both(
       n >= 2 * primitives_per_thread, [&] { work(first); }, [&] { work(second); });
   result.pairs = first.count + second.count;
+  result.complete = !stop;
   std::vector<std::uint64_t> pairs;
   for (Found* found : {&first, &second})
     for (; !found->lowest.empty(); found->lowest.pop()) pairs.push_back(found->lowest.top());

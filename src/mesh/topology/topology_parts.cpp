@@ -59,9 +59,11 @@ void write_notes(TopologyReport& r) {
                       "island with negative volume, or a cavity with positive volume; "
                       "--fix-orientation reverses them)");
   if (r.self_intersecting_pairs > 0)
-    r.notes.push_back("self-intersecting: " + n(r.self_intersecting_pairs) +
-                      " face pairs intersect; the volume counts the overlap twice or not at all, "
-                      "so volume, centre of mass and inertia are not those of a solid");
+    r.notes.push_back(
+        "self-intersecting: " + std::string(r.self_intersections_complete ? "" : "at least ") +
+        n(r.self_intersecting_pairs) +
+        " face pairs intersect; the volume counts the overlap twice or not at all, "
+        "so volume, centre of mass and inertia are not those of a solid");
   if (r.zero_area_faces + r.small_area_faces > 0)
     r.notes.push_back("degenerate faces: " + n(r.zero_area_faces) + " with zero area, " +
                       n(r.small_area_faces) + " nearly zero; they do not change area or volume");
@@ -86,6 +88,7 @@ void find_face_intersections(TopologyTally& t) {
       find_self_intersections(mesh.positions, corners, mesh.face_offsets, t.cap);
   r.self_intersections_checked = true;
   r.self_intersecting_pairs = found.pairs;
+  r.self_intersections_complete = found.complete;
   r.self_intersection_list = std::move(found.list);
 }
 

@@ -20,9 +20,16 @@ struct SelfIntersection {
   Vec3d point{};  // a point where they meet (computed in doubles: near the intersection)
 };
 
+// The pass stops once it has found this many intersecting face pairs: a soup whose faces nearly
+// all meet has up to n²/2 of them, and deciding each would take minutes; a count this large
+// already says all there is to say.
+inline constexpr std::size_t max_counted_intersections = 1000000;
+
 struct SelfIntersections {
-  std::size_t pairs = 0;                 // intersecting face pairs (never capped)
-  std::vector<SelfIntersection> list;    // the first pairs in (face0, face1) order, up to the cap
+  std::size_t pairs = 0;  // intersecting face pairs (at least this many when !complete)
+  bool complete = true;   // false: stopped at max_counted_intersections
+  // The first pairs in (face0, face1) order, up to the cap (when !complete: of those found).
+  std::vector<SelfIntersection> list;
   std::size_t degenerate_triangles = 0;  // fan triangles with collinear corners, left out
   std::size_t nonfinite_triangles = 0;   // fan triangles with an infinite or NaN corner, left out
 };

@@ -110,7 +110,8 @@ struct TopologyReport {
 
   // Self-intersections (self_intersections.hpp), when TopologyOptions::self_intersections.
   bool self_intersections_checked = false;
-  std::size_t self_intersecting_pairs = 0;  // face pairs that intersect (never capped)
+  std::size_t self_intersecting_pairs = 0;  // face pairs that intersect (at least, when the
+  bool self_intersections_complete = true;  // pass stopped at max_counted_intersections)
   std::vector<SelfIntersection> self_intersection_list;
 
   // Whether volume, centre of mass and inertia are meaningful: no boundary, consistent
