@@ -68,8 +68,9 @@ std::string mesh_name(const Analysis& r) {
 }  // namespace
 
 SiInertial si_inertial(const Analysis& r) {
-  // A length in the file's unit is s metres. With --density ρ (kg/m³): m = ρ V s³ and
-  // I = ρ ∫ r² dV s⁵, the report's figures (computed with the number ρ) scaled by s³ and s⁵. With
+  // docs/conventions.md §14. A length in the file's unit is s metres. With --density ρ (kg/m³): m =
+  // ρ V s³ and I = ρ ∫ r² dV s⁵, the report's figures (computed with the number ρ) scaled by s³ and
+  // s⁵. With
   // --mass M (kg): m = M, ρ = M / (V s³), I = (M / V) ∫ r² dV s², the report's inertia × s².
   const double s = metres_per_unit(r.unit);
   const MassProperties& m = r.mass;

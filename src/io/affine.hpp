@@ -7,8 +7,9 @@
 
 namespace pgamesh::detail {
 
-// Three rows of (A | t). `identity` is kept apart so that untransformed coordinates are copied
-// bit for bit rather than multiplied by ones and zeros.
+// Three rows of (A | t): 3MF's row-vector matrices (3MF core specification §3.3) and glTF's
+// column-major ones (glTF 2.0 §3.5.2) both become this form. `identity` is kept apart so that
+// untransformed coordinates are copied bit for bit rather than multiplied by ones and zeros.
 struct Affine {
   double m[3][4] = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}};
   bool identity = true;

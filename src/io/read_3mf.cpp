@@ -20,6 +20,7 @@
 #include "io/xml_arena.hpp"
 #include "io/zip_package.hpp"
 #include "pgamesh/core/input_error.hpp"
+#include "pgamesh/core/number_text.hpp"
 
 namespace pgamesh::detail {
 
@@ -106,37 +107,9 @@ class XmlPart {
   pugi::xml_document doc_;
 };
 
-enum class NumberFault { none, malformed, out_of_range, non_finite };
-
-// ST_Number of the specification, read with std::from_chars like every number in pgamesh
-// (number_text.hpp): the whole value or an error; a leading '+' allowed.
-NumberFault parse_double(const char* text, double& value) {
-  std::size_t n = std::strlen(text);
-  if (n > 1 && text[0] == '+' && text[1] != '-') ++text, --n;
-  const auto [stop, ec] = std::from_chars(text, text + n, value);
-  if (n == 0 || stop != text + n) return NumberFault::malformed;
-  if (ec == std::errc::result_out_of_range) return NumberFault::out_of_range;
-  if (ec != std::errc{}) return NumberFault::malformed;
-  return std::isfinite(value) ? NumberFault::none : NumberFault::non_finite;
-}
-
-const char* describe(NumberFault f) {
-  switch (f) {
-    case NumberFault::malformed:
-      return "malformed number";
-    case NumberFault::out_of_range:
-      return "number out of double range";
-    case NumberFault::non_finite:
-      return "non-finite number (inf or nan)";
-    case NumberFault::none:
-      break;
-  }
-  return "";
-}
-
 double number(const XmlPart& x, const pugi::xml_node& n, const pugi::xml_attribute& a) {
   double v = 0;
-  const NumberFault f = parse_double(a.value(), v);
+  const NumberFault f = read_number(a.value(), v);
   if (f != NumberFault::none) x.fail(n, a, std::string(describe(f)) + " '" + a.value() + "'");
   return v;
 }
@@ -171,7 +144,7 @@ std::optional<Affine> transform_of(const XmlPart& x, const pugi::xml_node& n) {
     while (p < end && !(*p == ' ' || *p == '\t' || *p == '\n' || *p == '\r')) ++p;
     if (k == 12) x.fail(n, a, "more than 12 numbers in the transform");
     const std::string word(token, p);
-    const NumberFault f = parse_double(word.c_str(), m[k]);
+    const NumberFault f = read_number(word, m[k]);
     if (f != NumberFault::none)
       x.fail(n, a, std::string(describe(f)) + " '" + word + "' in the transform");
     ++k;

@@ -31,6 +31,24 @@ MassProperties streamed(const std::vector<char>& bytes, unsigned threads = 0) {
   return binary_stl_mass_properties(*view, "test.stl", opt);
 }
 
+// The closed form of the tetrahedron (0,0,0), (a,0,0), (0,b,0), (0,0,c) with a, b, c = 3, 2, 1:
+// V = abc/6 = 1, c = (a/4, b/4, c/4) = (3/4, 1/2, 1/4); about the origin ∫x² = a³bc/60 = 27·2/60,
+// ∫xy = a²b²c/120 = 36/120, and the others alike.
+void expect_corner_tetrahedron(const MassProperties& p) {
+  EXPECT_DOUBLE_EQ(p.volume, 1);
+  EXPECT_DOUBLE_EQ(p.center_of_mass.x, 0.75);
+  EXPECT_DOUBLE_EQ(p.center_of_mass.y, 0.5);
+  EXPECT_DOUBLE_EQ(p.center_of_mass.z, 0.25);
+  const double xx = 27.0 * 2 / 60, yy = 3 * 8.0 / 60, zz = 3 * 2.0 / 60;
+  const double xy = 9 * 4.0 / 120, yz = 3 * 4.0 / 120, zx = 9 * 2.0 / 120;
+  EXPECT_NEAR(p.inertia_origin[0][0], yy + zz, 1e-15);
+  EXPECT_NEAR(p.inertia_origin[1][1], xx + zz, 1e-15);
+  EXPECT_NEAR(p.inertia_origin[2][2], xx + yy, 1e-15);
+  EXPECT_NEAR(p.inertia_origin[0][1], -xy, 1e-15);
+  EXPECT_NEAR(p.inertia_origin[1][2], -yz, 1e-15);
+  EXPECT_NEAR(p.inertia_origin[0][2], -zx, 1e-15);
+}
+
 }  // namespace
 
 TEST(MassStl, StreamedEqualsReadMesh) {
@@ -106,20 +124,7 @@ TEST(MassStl, OwnCornerTetrahedronHasVolumeOne) {
   const auto view = binary_stl_view(mapped.bytes(), file.path());
   ASSERT_TRUE(view);
   const MassProperties p = binary_stl_mass_properties(*view, file.path());
-  // V = abc/6 = 1, c = (a/4, b/4, c/4) = (3/4, 1/2, 1/4); about the origin ∫x² = a³bc/60 = 27·2/60,
-  // ∫xy = a²b²c/120 = 36/120, and the others alike (a, b, c = 3, 2, 1).
-  EXPECT_DOUBLE_EQ(p.volume, 1);
-  EXPECT_DOUBLE_EQ(p.center_of_mass.x, 0.75);
-  EXPECT_DOUBLE_EQ(p.center_of_mass.y, 0.5);
-  EXPECT_DOUBLE_EQ(p.center_of_mass.z, 0.25);
-  const double xx = 27.0 * 2 / 60, yy = 3 * 8.0 / 60, zz = 3 * 2.0 / 60;
-  const double xy = 9 * 4.0 / 120, yz = 3 * 4.0 / 120, zx = 9 * 2.0 / 120;
-  EXPECT_NEAR(p.inertia_origin[0][0], yy + zz, 1e-15);
-  EXPECT_NEAR(p.inertia_origin[1][1], xx + zz, 1e-15);
-  EXPECT_NEAR(p.inertia_origin[2][2], xx + yy, 1e-15);
-  EXPECT_NEAR(p.inertia_origin[0][1], -xy, 1e-15);
-  EXPECT_NEAR(p.inertia_origin[1][2], -yz, 1e-15);
-  EXPECT_NEAR(p.inertia_origin[0][2], -zx, 1e-15);
+  expect_corner_tetrahedron(p);
 }
 
 TEST(MassStl, IrregularTetrahedronHasVolumeOne) {
@@ -130,20 +135,7 @@ TEST(MassStl, IrregularTetrahedronHasVolumeOne) {
   const auto view = binary_stl_view(file.bytes(), "tetrahedronIrregular.bin.stl");
   ASSERT_TRUE(view);
   const MassProperties p = binary_stl_mass_properties(*view, "tetrahedronIrregular.bin.stl");
-  // The tetrahedron (0,0,0), (3,0,0), (0,2,0), (0,0,1): V = 1, c = (3/4, 1/2, 1/4),
-  // about the origin ∫x² = a³bc/60 = 27·2/60, ∫xy = a²b²c/120 = 36/120, ...
-  EXPECT_DOUBLE_EQ(p.volume, 1);
-  EXPECT_DOUBLE_EQ(p.center_of_mass.x, 0.75);
-  EXPECT_DOUBLE_EQ(p.center_of_mass.y, 0.5);
-  EXPECT_DOUBLE_EQ(p.center_of_mass.z, 0.25);
-  const double xx = 27.0 * 2 / 60, yy = 3 * 8.0 / 60, zz = 3 * 2.0 / 60;
-  const double xy = 9 * 4.0 / 120, yz = 3 * 4.0 / 120, zx = 9 * 2.0 / 120;
-  EXPECT_NEAR(p.inertia_origin[0][0], yy + zz, 1e-15);
-  EXPECT_NEAR(p.inertia_origin[1][1], xx + zz, 1e-15);
-  EXPECT_NEAR(p.inertia_origin[2][2], xx + yy, 1e-15);
-  EXPECT_NEAR(p.inertia_origin[0][1], -xy, 1e-15);
-  EXPECT_NEAR(p.inertia_origin[1][2], -yz, 1e-15);
-  EXPECT_NEAR(p.inertia_origin[0][2], -zx, 1e-15);
+  expect_corner_tetrahedron(p);
 }
 
 namespace {

@@ -12,14 +12,41 @@
 
 namespace pgamesh {
 
-// The finite number that is the whole of `text` (a leading '+' allowed), or nullopt.
-inline std::optional<double> parse_number(std::string_view text) {
+// Why a text is not a number, for readers that say so (3MF): not a decimal number as a whole,
+// beyond double's range, or infinite / NaN.
+enum class NumberFault { none, malformed, out_of_range, non_finite };
+
+// Reads the whole of `text` (a leading '+' allowed) into `value`: NumberFault::none when it is a
+// finite number, else why not.
+inline NumberFault read_number(std::string_view text, double& value) {
   if (text.size() > 1 && text[0] == '+' && text[1] != '-') text.remove_prefix(1);
-  double value = 0;
   const char* end = text.data() + text.size();
   const auto [stop, ec] = std::from_chars(text.data(), end, value);
-  if (text.empty() || ec != std::errc{} || stop != end || !std::isfinite(value))
-    return std::nullopt;
+  if (text.empty() || stop != end) return NumberFault::malformed;
+  if (ec == std::errc::result_out_of_range) return NumberFault::out_of_range;
+  if (ec != std::errc{}) return NumberFault::malformed;
+  return std::isfinite(value) ? NumberFault::none : NumberFault::non_finite;
+}
+
+// The words for a fault, as error messages print them.
+inline const char* describe(NumberFault f) {
+  switch (f) {
+    case NumberFault::malformed:
+      return "malformed number";
+    case NumberFault::out_of_range:
+      return "number out of double range";
+    case NumberFault::non_finite:
+      return "non-finite number (inf or nan)";
+    case NumberFault::none:
+      break;
+  }
+  return "number";
+}
+
+// The finite number that is the whole of `text` (a leading '+' allowed), or nullopt.
+inline std::optional<double> parse_number(std::string_view text) {
+  double value = 0;
+  if (read_number(text, value) != NumberFault::none) return std::nullopt;
   return value;
 }
 

@@ -10,8 +10,8 @@ namespace pgamesh {
 
 enum class LengthUnit { unspecified, micron, millimeter, centimeter, inch, foot, meter };
 
-// Metres in one unit; exact decimal factors (an inch is 0.0254 m by definition). 1 for
-// `unspecified`, whose figures are unitless.
+// Metres in one unit; exact decimal factors (an inch is 0.0254 m by definition;
+// docs/conventions.md §14). 1 for `unspecified`, whose figures are unitless.
 constexpr double metres_per_unit(LengthUnit u) {
   switch (u) {
     case LengthUnit::micron:

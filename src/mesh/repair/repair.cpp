@@ -13,10 +13,9 @@ namespace pgamesh {
 namespace {
 
 // The faces of `mesh` kept by `keep`, in order; `origin` (face → input face) follows them.
-Mesh keep_faces(const Mesh& mesh, const std::vector<char>& keep,
-                std::vector<std::uint32_t>& origin) {
+Mesh keep_faces(Mesh&& mesh, const std::vector<char>& keep, std::vector<std::uint32_t>& origin) {
   Mesh out;
-  out.vertices = mesh.vertices;
+  out.vertices = std::move(mesh.vertices);
   std::vector<std::uint32_t> kept_origin;
   for (std::size_t f = 0; f < mesh.face_count(); ++f) {
     if (!keep[f]) continue;
@@ -145,7 +144,7 @@ RepairReport repair(Mesh& mesh, const RepairOptions& options) {
   std::vector<char> keep(m.face_count(), 1);
   merge_repeated_corners(m, keep, report, origin, cap);
   if (options.remove_duplicate_faces) remove_duplicate_faces(m, keep, report, origin, cap);
-  m = keep_faces(m, keep, origin);
+  m = keep_faces(std::move(m), keep, origin);
 
   // 4. A consistent orientation, so that each hole's rim runs one way.
   std::vector<char> reversed(m.face_count(), 0);
@@ -158,7 +157,6 @@ RepairReport repair(Mesh& mesh, const RepairOptions& options) {
     t.list_cap = 0;
     t.self_intersections = false;  // only the loops are wanted here
     const TopologyReport r = analyze_topology(m, t);
-    const Mesh rims = m;  // the corners the loops name
     // A rim that is one face's outline (a lone face, a flap) is no hole: its cap would be that
     // face again, reversed — a double wall.
     std::map<std::vector<std::uint32_t>, char> outlines;
@@ -169,7 +167,8 @@ RepairReport repair(Mesh& mesh, const RepairOptions& options) {
       CappedHole hole;
       std::vector<std::uint32_t> rim;
       rim.reserve(loop.half_edges.size());
-      for (std::uint32_t c : loop.half_edges) rim.push_back(rims.corners[c]);
+      // The loops name corners of the mesh as it was; caps are appended after them.
+      for (std::uint32_t c : loop.half_edges) rim.push_back(m.corners[c]);
       hole.rim_vertices = rim.size();
       if (!rim.empty()) hole.first_vertex = m.vertices[rim.front()];
       if (!options.cap_holes) {

@@ -1,7 +1,8 @@
 // Capping a hole: the triangles that close one boundary loop, laid in the loop's own best-fit
 // plane. The plane comes from the loop's summed edge carriers (geometry/edge_loop.hpp): their
-// moment is twice the rim's vector area, whose direction is the plane's normal, and the plane
-// passes through the rim's centroid. The rim is projected onto that plane and ear-clipped
+// moment is twice the rim's vector area (paper §4c, Table 1 "planar polygon area", in 3-D as
+// docs/conventions.md §6 states it), whose direction is the plane's normal, and the plane passes
+// through the rim's centroid. The rim is projected onto that plane and ear-clipped
 // (docs/topology.md, "Repair").
 #pragma once
 
