@@ -26,13 +26,15 @@ using pgamesh::test::TempFile;
 namespace {
 
 // The report of the mapped file and of the same bytes through a pipe, with `flags`: equal but for
-// the file name.
+// the file name. The search for intersecting faces runs on the welded mesh, after every page is
+// released; it has its own tests (test_self_intersections_cli.cpp), and is left out here.
 void expect_same_props(const std::string& bytes, const std::string& flags) {
   SCOPED_TRACE(flags);
   const TempFile file(".mesh", bytes);
   const std::string& path = file.path();
-  const CliRun mapped = run_cli("props \"" + path + "\" --json " + flags);
-  const CliRun piped = run_cli("props - --json " + flags, path);
+  const std::string options = " --json --no-self-intersections " + flags;
+  const CliRun mapped = run_cli("props \"" + path + "\"" + options);
+  const CliRun piped = run_cli("props -" + options, path);
   ASSERT_EQ(mapped.status, 0) << mapped.err;
   ASSERT_EQ(piped.status, 0) << piped.err;
   json a = parse_json(mapped.out), b = parse_json(piped.out);

@@ -91,6 +91,7 @@ void expect_same_report(const TopologyReport& a, const TopologyReport& b) {
   }
   EXPECT_EQ(a.self_intersections_checked, b.self_intersections_checked);
   EXPECT_EQ(a.self_intersecting_pairs, b.self_intersecting_pairs);
+  EXPECT_EQ(a.self_intersections_complete, b.self_intersections_complete);
   ASSERT_EQ(a.self_intersection_list.size(), b.self_intersection_list.size());
   for (std::size_t i = 0; i < a.self_intersection_list.size(); ++i) {
     const SelfIntersection &x = a.self_intersection_list[i], &y = b.self_intersection_list[i];
