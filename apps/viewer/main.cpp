@@ -95,6 +95,14 @@ int main(int argc, char** argv) {
         return 2;
       }
       options.weld_tolerance = *t;
+    } else if ((arg == "--head-timeout" || arg == "--request-timeout") && has_value) {
+      const auto t = pgamesh::parse_number(argv[++i]);
+      if (!t || *t <= 0 || *t > 86400) {
+        std::fprintf(stderr, "pgamesh serve: %s wants seconds in (0, 86400], got '%s'\n",
+                     argv[i - 1], argv[i]);
+        return 2;
+      }
+      (arg == "--head-timeout" ? options.head_timeout : options.request_timeout) = *t;
     } else if (arg == "--allow-remote") {
       options.allow_remote = true;
     } else if (arg == "--quiet") {

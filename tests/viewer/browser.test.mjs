@@ -2,7 +2,7 @@
 // meshes opened from the bundled list, the file picker and drag and drop; figures checked against
 // the file and the library; bad uploads shown as messages. Screenshots go to test-artifacts/viewer.
 import assert from 'node:assert/strict';
-import { mkdirSync, writeFileSync } from 'node:fs';
+import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { createRequire } from 'node:module';
 import { join } from 'node:path';
 import { after, before, describe, test } from 'node:test';
@@ -320,6 +320,44 @@ describe('viewer page', () => {
       await small.stop();
     }
   });
+  test('a real broken mesh: the teapot\'s holes and intersecting faces, as pgamesh check finds them',
+       async () => {
+    // The npm teapot (tests/data/meshes/npm, a copy of ../shared/meshes/npm/teapot.obj): open at
+    // the lid and spout, its handle and spout passing through the body.
+    const path = join(repoRoot, 'tests', 'data', 'meshes', 'npm', 'teapot.obj');
+    const cli = await runCli(['check', path, '--json']);
+    assert.equal(cli.code, 0, cli.stderr);
+    const c = JSON.parse(cli.stdout);
+    assert.ok(c.boundary_edges > 0 && c.self_intersecting_pairs > 0);
+    const { page, problems } = await openPage(server.url);
+    try {
+      await selectFile(page, 'teapot.obj', readFileSync(path));
+      await page.waitForFunction(() => document.getElementById('mesh-name').textContent ===
+        'teapot.obj' && document.body.dataset.state === 'ready');
+      await page.waitForSelector('#defects:not([hidden])');
+      const counts = JSON.parse(await page.getAttribute('#defects-list', 'data-counts'));
+      assert.equal(counts.boundary_edges, c.boundary_edges);
+      assert.equal(counts.self_intersecting_pairs, c.self_intersecting_pairs);
+      assert.equal(counts.nonmanifold_edges, c.nonmanifold_edges);
+      assert.equal(counts.inconsistent_edges, c.inconsistent_edges);
+      const list = await page.textContent('#defects-list');
+      assert.match(list, new RegExp(`${c.boundary_edges} boundary edges`));
+      assert.match(list, new RegExp(`${c.self_intersecting_pairs} pairs of intersecting faces`));
+      // Drawn: one segment per boundary edge; the intersecting faces, at least one pair's two.
+      const drawn = await page.evaluate(() => {
+        const g = window.pgameshViewer.view.groups;
+        return { boundary: g.boundary?.geometry.getAttribute('position').count / 2,
+                 intersecting: g.intersecting?.geometry.getAttribute('position').count / 3 };
+      });
+      assert.equal(drawn.boundary, c.boundary_edges);
+      assert.ok(drawn.intersecting >= 2, `${drawn.intersecting} triangles drawn`);
+      await shot(page, 'teapot-defects');
+      assert.deepEqual(problems.filter((p) => !/status of 422/.test(p)), []);
+    } finally {
+      await page.close();
+    }
+  });
+
   test('what check finds is highlighted and listed; Repair closes the mesh', async () => {
     // The unit cube without its top, one bottom triangle flipped: 4 boundary edges (one hole)
     // and inconsistently oriented edges.

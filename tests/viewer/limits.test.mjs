@@ -2,10 +2,11 @@
 // names (DNS rebinding) and from other sites' pages, addresses other machines reach unless asked
 // for, and command lines naming what cannot be served.
 import assert from 'node:assert/strict';
+import net from 'node:net';
 import { after, before, describe, test } from 'node:test';
 
 import {
-  rawRequest, runCli, sendChunked, startServer, tankPath, tetrahedronObj,
+  rawRequest, runCli, sendChunked, startServer, tankPath, tetrahedronObj, trickle,
 } from './support.mjs';
 
 let server;
@@ -91,6 +92,77 @@ describe('body limits', () => {
                                'Transfer-Encoding: chunked\r\n');
     assert.equal(r.status, 413);
     assert.equal(r.headers.connection, 'close');
+  });
+});
+
+describe('slow clients', () => {
+  // Each byte comes well within the 5 s per-read timeout: only a whole-request deadline ends these.
+  test('a request head trickled past --head-timeout is cut; other requests are answered meanwhile',
+       async () => {
+    const strict = await startServer(['--quiet', '--head-timeout', '1', '--request-timeout', '2']);
+    try {
+      const host = new URL(strict.url).host;
+      const head = `GET /api/info HTTP/1.1\r\nHost: ${host}\r\nX-Pad: ${'a'.repeat(200)}\r\n\r\n`;
+      const [slow] = await Promise.all([trickle(strict.url, head, 50, 8000),
+                                        serverAnswers(strict.url)]);
+      assert.notEqual(slow.closedAfterMs, null, 'the slow head was never cut');
+      assert.ok(slow.closedAfterMs >= 1000 && slow.closedAfterMs < 3000, `${slow.closedAfterMs} ms`);
+      assert.ok(slow.sent < head.length, 'the head was sent whole before the cut');
+      assert.equal(slow.answer, '');
+      await serverAnswers(strict.url);
+    } finally {
+      await strict.stop();
+    }
+  });
+
+  test('a body trickled past --request-timeout is cut; a prompt one on the same terms is not',
+       async () => {
+    const strict = await startServer(['--quiet', '--head-timeout', '1', '--request-timeout', '1']);
+    try {
+      const host = new URL(strict.url).host;
+      const body = tetrahedronObj;
+      const request = `POST /api/upload?name=t.obj HTTP/1.1\r\nHost: ${host}\r\n` +
+                      `Content-Length: ${body.length}\r\n\r\n`;
+      // The head at once, then the body a byte every 50 ms (about 3 s in all).
+      const slow = await trickle(strict.url, body, 50, 8000, { prefix: request });
+      assert.notEqual(slow.closedAfterMs, null, 'the slow body was never cut');
+      assert.ok(slow.closedAfterMs >= 1000 && slow.closedAfterMs < 3000, `${slow.closedAfterMs} ms`);
+      assert.ok(slow.sent < body.length, 'the body was sent whole before the cut');
+      assert.doesNotMatch(slow.answer, /^HTTP\/1\.1 201/);
+      const prompt = await fetch(new URL('/api/upload?name=t.obj', strict.url),
+                                 { method: 'POST', body });
+      assert.equal(prompt.status, 201);
+    } finally {
+      await strict.stop();
+    }
+  });
+
+  test('a kept-alive connection idle between requests is not cut by the head deadline',
+       async () => {
+    const strict = await startServer(['--quiet', '--head-timeout', '1']);
+    try {
+      const host = new URL(strict.url).host;
+      const one = `GET /api/info HTTP/1.1\r\nHost: ${host}\r\n\r\n`;
+      // Three requests on one connection, 0.7 s apart: 2.1 s in all, each head within 1 s.
+      const { hostname, port } = new URL(strict.url);
+      const answers = await new Promise((resolvePromise, reject) => {
+        let data = '', sent = 0;
+        const socket = net.connect(Number(port), hostname, () => {
+          const next = () => {
+            if (sent === 3) return setTimeout(() => { socket.destroy(); resolvePromise(data); }, 300);
+            socket.write(one);
+            ++sent;
+            setTimeout(next, 700);
+          };
+          next();
+        });
+        socket.on('data', (d) => { data += d.toString('latin1'); });
+        socket.on('error', reject);
+      });
+      assert.equal(answers.split('HTTP/1.1 200 OK').length - 1, 3, answers.slice(0, 200));
+    } finally {
+      await strict.stop();
+    }
   });
 });
 

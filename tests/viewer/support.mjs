@@ -113,6 +113,39 @@ export function rawRequest(url, requestLine, extraHeaders = '', host = new URL(u
   });
 }
 
+// Writes `prefix` at once, then `text` one byte every `byteMs` ms, as a slow client does. Resolves
+// to { closedAfterMs, sent, answer }: when the server ended the connection (null if it had not
+// within `giveUpMs`), how many bytes of `text` had gone, and what it answered (if anything).
+export function trickle(url, text, byteMs, giveUpMs, { prefix = '' } = {}) {
+  const { hostname, port } = new URL(url);
+  return new Promise((resolvePromise) => {
+    const start = Date.now();
+    let sent = 0, answer = '', timer = null, done = false;
+    const socket = net.connect(Number(port), hostname);
+    const finish = (closed) => {
+      if (done) return;
+      done = true;
+      clearTimeout(timer);
+      socket.destroy();
+      resolvePromise({ closedAfterMs: closed ? Date.now() - start : null, sent, answer });
+    };
+    const writeNext = () => {
+      if (done) return;
+      if (Date.now() - start > giveUpMs) return finish(false);
+      if (sent < text.length) socket.write(text[sent++]);
+      timer = setTimeout(writeNext, byteMs);
+    };
+    socket.on('connect', () => {
+      socket.write(prefix);
+      writeNext();
+    });
+    socket.on('data', (d) => { answer += d.toString('latin1'); });
+    socket.on('end', () => finish(true));
+    socket.on('close', () => finish(true));
+    socket.on('error', () => finish(true));
+  });
+}
+
 // Parses the head of an HTTP answer: { status, headers } (header names in lower case).
 function parseHead(head) {
   const lines = head.split('\r\n');

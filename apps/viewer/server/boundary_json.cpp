@@ -1,5 +1,9 @@
 #include "boundary_json.hpp"
 
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
 #include "json_text.hpp"
 
 namespace pgamesh::viewer {
@@ -16,9 +20,35 @@ cli::Json segments(const std::vector<EdgeLocation>& edges) {
   return out;
 }
 
+// The faces of the listed intersecting pairs, each once in face order, as flat polygons.
+cli::Json intersecting_faces(const TopologyReport& t, const Mesh& mesh) {
+  using cli::Json;
+  std::vector<std::uint32_t> faces;
+  for (const SelfIntersection& x : t.self_intersection_list) {
+    faces.push_back(x.face0);
+    faces.push_back(x.face1);
+  }
+  std::sort(faces.begin(), faces.end());
+  faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+  Json out = Json::array();
+  for (std::uint32_t f : faces) {
+    if (f >= mesh.face_count()) continue;
+    Json polygon = Json::array();
+    const std::uint32_t* corner = mesh.face(f);
+    for (std::size_t k = 0; k < mesh.face_size(f); ++k) {
+      const Vec3d& p = mesh.vertices[corner[k]];
+      polygon.push_back(cli::json_number(p.x));
+      polygon.push_back(cli::json_number(p.y));
+      polygon.push_back(cli::json_number(p.z));
+    }
+    out.push_back(std::move(polygon));
+  }
+  return out;
+}
+
 }  // namespace
 
-std::string boundary_json(const TopologyReport& t) {
+std::string boundary_json(const TopologyReport& t, const Mesh& mesh) {
   using cli::Json;
   Json loops = Json::array();
   for (const BoundaryLoop& l : t.boundary_loops)
@@ -41,6 +71,8 @@ std::string boundary_json(const TopologyReport& t) {
   w["cavity_components"] = t.cavity_components;
   w["inward_components"] = t.inward_components;
   w["self_intersecting_pairs"] = t.self_intersecting_pairs;
+  w["self_intersections_complete"] = t.self_intersections_complete;
+  w["self_intersecting_faces"] = intersecting_faces(t, mesh);
   w["notes"] = cli::json_strings(t.notes);
   return cli::json_text(w);
 }

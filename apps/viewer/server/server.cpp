@@ -33,6 +33,7 @@
 #include "pgamesh/mesh/topology/topology.hpp"
 #include "props_report.hpp"
 #include "repair_json.hpp"
+#include "request_deadlines.hpp"
 #include "responses.hpp"
 
 namespace pgamesh::viewer {
@@ -45,7 +46,8 @@ constexpr std::size_t kWorkerThreads = 32;
 // Connection limits (docs/viewer.md, "Limits"). Each read or write of a request or answer must
 // progress within kReadWriteTimeoutSeconds; an idle keep-alive connection is closed after
 // kKeepAliveSeconds and any connection after kKeepAliveRequests requests, so a client holds a
-// worker only while it sends or reads.
+// worker only while it sends or reads; and a whole request must arrive within the deadlines of
+// ServerOptions (request_deadlines.hpp), so a client that trickles bytes cannot hold it long.
 constexpr time_t kReadWriteTimeoutSeconds = 5;
 constexpr time_t kKeepAliveSeconds = 2;
 constexpr std::size_t kKeepAliveRequests = 100;
@@ -125,6 +127,7 @@ void add_routes(httplib::Server& svr, const ServerOptions& options, const HostCh
                 const AssetTable& assets, MeshStore& store) {
   // Every request passes here before its body is read: who may ask, what, and how much.
   svr.set_pre_routing_handler([&](const httplib::Request& req, httplib::Response& res) {
+    RequestWatchdog::head_received();
     const std::string host = req.get_header_value("Host");
     if (!host_allowed(hosts, host))
       return refuse(req, res, 421,
@@ -213,8 +216,8 @@ void add_routes(httplib::Server& svr, const ServerOptions& options, const HostCh
           });
 
   // What check finds, to draw and list: boundary, non-manifold and inconsistent edges (at most
-  // kMaxBoundarySegments of each), the holes' loops, the defects' counts. /boundary is its old
-  // name.
+  // kMaxBoundarySegments of each), the faces of intersecting pairs (of as many pairs), the holes'
+  // loops, the defects' counts. /boundary is its old name.
   svr.Get(R"(/api/mesh/([fu][0-9]{1,18})/(boundary|check))",
           [&store](const httplib::Request& req, httplib::Response& res) {
             if (auto m = find_mesh(store, req.matches[1], res)) {
@@ -222,7 +225,7 @@ void add_routes(httplib::Server& svr, const ServerOptions& options, const HostCh
               options.list_cap = kMaxBoundarySegments;
               options.weld_tolerance = m->weld_tolerance;
               try {
-                send_raw_json(res, boundary_json(analyze_topology(m->mesh, options)));
+                send_raw_json(res, boundary_json(analyze_topology(m->mesh, options), m->mesh));
               } catch (const std::exception& e) {
                 send_error(res, 422, m->name + ": " + e.what());
               }
@@ -323,11 +326,14 @@ void add_routes(httplib::Server& svr, const ServerOptions& options, const HostCh
         }
       });
 
-  if (options.log_requests)
-    svr.set_logger([](const httplib::Request& req, const httplib::Response& res) {
-      std::fprintf(stderr, "pgamesh serve: %s %s -> %d\n", req.method.c_str(), req.path.c_str(),
-                   res.status);
-    });
+  // Called once each answer is written: the next request's head deadline starts here.
+  svr.set_logger(
+      [log = options.log_requests](const httplib::Request& req, const httplib::Response& res) {
+        RequestWatchdog::answer_sent();
+        if (log)
+          std::fprintf(stderr, "pgamesh serve: %s %s -> %d\n", req.method.c_str(), req.path.c_str(),
+                       res.status);
+      });
 }
 
 }  // namespace
@@ -359,6 +365,10 @@ int run_server(const ServerOptions& options) {
   sigaddset(&stop_signals, SIGTERM);
   pthread_sigmask(SIG_BLOCK, &stop_signals, nullptr);
 
+  const auto to_ms = [](double seconds) {
+    return std::chrono::milliseconds(static_cast<long long>(seconds * 1000));
+  };
+  RequestWatchdog watchdog({to_ms(options.head_timeout), to_ms(options.request_timeout)});
   httplib::Server svr;
   // A declared Content-Length over the limit: read and dropped by httplib, then 413.
   svr.set_payload_max_length(options.max_upload);
@@ -379,7 +389,7 @@ int run_server(const ServerOptions& options) {
   });
   // httplib gives each connection a worker thread while it is open, idle keep-alive included:
   // enough workers for a few browser tabs (6 connections each) and short idle keep-alives.
-  svr.new_task_queue = [] { return new httplib::ThreadPool(kWorkerThreads); };
+  svr.new_task_queue = [&watchdog] { return watchdog.new_task_queue(kWorkerThreads); };
   svr.set_read_timeout(kReadWriteTimeoutSeconds);
   svr.set_write_timeout(kReadWriteTimeoutSeconds);
   svr.set_keep_alive_timeout(kKeepAliveSeconds);

@@ -19,6 +19,11 @@ struct ServerOptions {
   std::string bundled_dir;    // folder of the bundled meshes (data/meshes)
   std::vector<std::string> files;  // meshes named on the command line
   bool log_requests = true;        // one line per request on stderr
+  // Whole-request deadlines (request_deadlines.hpp): a request's head must arrive within
+  // head_timeout seconds of the connection or of the previous answer, and its body be read and
+  // answered within request_timeout seconds of the head.
+  double head_timeout = 10;
+  double request_timeout = 60;
 };
 
 /// Serves until SIGINT or SIGTERM. Prints "pgamesh serve: listening on http://HOST:PORT/" on stdout

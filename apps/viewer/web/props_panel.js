@@ -7,6 +7,7 @@ import { setFigure } from './panels.js';
 
 const AXIS_COLORS = [0xe4572e, 0x29bf12, 0x2e86de];  // moments ascending: smallest red
 const EDGE_COLORS = { boundary: 0xff00aa, nonmanifold: 0xff8c00, inconsistent: 0x0a9396 };
+const INTERSECTING_COLOR = 0xe01e37;
 
 function plural(n, word) {
   return `${n} ${word}${n === 1 ? '' : 's'}`;
@@ -52,6 +53,9 @@ export class PropsPanel {
                                      ['inconsistent', 'inconsistent_segments']])
             view.setLayer(kind, c[key].length ? view.segments(
               c[key].map((s) => [s.slice(0, 3), s.slice(3, 6)]), EDGE_COLORS[kind]) : null);
+        if (view)
+          view.setLayer('intersecting', c.self_intersecting_faces.length
+            ? view.faces(c.self_intersecting_faces, INTERSECTING_COLOR) : null);
       }
     } catch (e) {
       if (seq === this.seq) this.onStatus(e.message);
@@ -72,7 +76,8 @@ export class PropsPanel {
         '(flipped faces)', 'inconsistent');
     add(c.inward_components, `${plural(c.inward_components, 'closed part')} facing inward`);
     add(c.self_intersecting_pairs,
-        `${plural(c.self_intersecting_pairs, 'pair')} of intersecting faces`);
+        `${c.self_intersections_complete === false ? 'at least ' : ''}` +
+        `${plural(c.self_intersecting_pairs, 'pair')} of intersecting faces`, 'intersecting');
     add(c.duplicated_faces, plural(c.duplicated_faces, 'duplicated face'));
     add(c.zero_area_faces, plural(c.zero_area_faces, 'zero-area face'));
     if (c.cavity_components > 0)
@@ -150,7 +155,7 @@ export class PropsPanel {
 
   draw(p) {
     const view = this.state.view;
-    for (const kind of Object.keys(EDGE_COLORS)) view.setLayer(kind, null);
+    for (const kind of [...Object.keys(EDGE_COLORS), 'intersecting']) view.setLayer(kind, null);
     const com = p.center_of_mass;
     if (!com) {  // null when undefined (docs/json.md)
       view.setLayer('com', null);

@@ -181,6 +181,22 @@ export class View {
     lines.renderOrder = 11;
     return lines;
   }
+
+  // Faces drawn over the mesh in one colour: polygons [[x0, y0, z0, x1, y1, z1, ...], ...], each
+  // as its fan of triangles, both sides, seen through the surface in front of them.
+  faces(polygons, color) {
+    const triangles = [];
+    for (const p of polygons) {
+      const corner = (k) => this.toScene([p[3 * k], p[3 * k + 1], p[3 * k + 2]]).toArray();
+      for (let k = 1; k + 1 < p.length / 3; ++k) triangles.push(...corner(0), ...corner(k), ...corner(k + 1));
+    }
+    const g = new THREE.BufferGeometry();
+    g.setAttribute('position', new THREE.BufferAttribute(new Float32Array(triangles), 3));
+    const mesh = new THREE.Mesh(g, new THREE.MeshBasicMaterial({
+      color, side: THREE.DoubleSide, depthTest: false, transparent: true, opacity: 0.6 }));
+    mesh.renderOrder = 10;
+    return mesh;
+  }
 }
 
 // True when this browser can draw WebGL.
