@@ -13,6 +13,7 @@
 // The same grammar reads SLP (Pro/ENGINEER render files, docs/formats.md): 'color R G B' lines
 // between facets and inside them, and 'normal N' lines (vertex normals) between 'facet' and
 // 'outer loop', are skipped unread; they never occur in an STL that would be read otherwise.
+// 'end solid' in two words closes a solid as 'endsolid' does.
 //
 // A consumer has two members:
 //   void vertex(const Vec3d& v);    // the next vertex of the current facet, in file order
@@ -88,6 +89,17 @@ inline bool keyword(TextCursor& c, std::string_view k) {
   return true;
 }
 
+// 'end solid': 'endsolid' written as two words on one line, as an SLP exporter writes it. Leaves
+// the cursor where it was when the line says something else.
+inline bool end_solid_two_words(TextCursor& c) {
+  const char* start = c.p;
+  if (!keyword(c, "end")) return false;
+  c.skip_blanks();
+  if (keyword(c, "solid")) return true;
+  c.p = start;
+  return false;
+}
+
 // c.coordinate(what) with its common case inline: a plain decimal that simple_decimal reads, ending
 // at whitespace or the end, is what TextCursor::number returns for it; anything else (from_chars,
 // errors and their positions) is left to c.coordinate from the same position.
@@ -161,7 +173,7 @@ void parse_stl_ascii_statements(TextCursor& c, StlAsciiState& s, Consumer& out,
       expect("endfacet");
     } else if (s.in_solid && keyword(c, "color")) {  // SLP: the colour of the next facets
       c.skip_line();
-    } else if (s.in_solid && keyword(c, "endsolid")) {
+    } else if (s.in_solid && (keyword(c, "endsolid") || end_solid_two_words(c))) {
       c.skip_line();
       s.in_solid = false;
     } else if (!s.in_solid && keyword(c, "solid")) {

@@ -63,6 +63,26 @@ TEST(ReadSlp, TheSlpExtensionNamesAnStlLikeFile) {
   EXPECT_DOUBLE_EQ(analyze_file(coloured.path()).mass.volume, 1.0 / 6.0);
 }
 
+TEST(ReadSlp, EndSolidInTwoWordsClosesTheSolid) {
+  std::string two_words = slp_tetrahedron(true);
+  two_words.replace(two_words.rfind("endsolid"), 8, "end  solid");
+  MeshSource source;
+  const Mesh slp = test::read_text(two_words + "solid second\nEnd Solid second\n", &source);
+  EXPECT_EQ(source.format, MeshFormat::slp);
+  EXPECT_EQ(slp.face_count(), 4u);
+  EXPECT_DOUBLE_EQ(mass_properties(slp).volume, 1.0 / 6.0);
+  EXPECT_TRUE(source.warnings.empty());
+  const test::TempFile file(".slp", two_words);  // the summing path of props --no-topology too
+  AnalysisOptions streamed;
+  streamed.topology = false;
+  EXPECT_DOUBLE_EQ(analyze_file(file.path(), streamed).mass.volume, 1.0 / 6.0);
+  // 'end' followed by anything else is not a solid's end.
+  const std::string end_facet = two_words.substr(0, two_words.rfind("end  solid")) + "end facet\n";
+  const auto line =
+      static_cast<std::uint64_t>(std::count(end_facet.begin(), end_facet.end(), '\n'));
+  EXPECT_TEXT_ERROR(test::read_error(end_facet), line, 1u, "expected 'facet' or 'endsolid'");
+}
+
 TEST(ReadSlp, AColourLineOutsideASolidIsAnError) {
   const std::string solid = slp_tetrahedron(true);
   const auto line = static_cast<std::uint64_t>(std::count(solid.begin(), solid.end(), '\n')) + 1;
