@@ -1,7 +1,6 @@
 #include "io/xml_arena.hpp"
 
 #include <algorithm>
-#include <cstdlib>
 #include <mutex>
 #include <pugixml.hpp>
 
@@ -11,22 +10,33 @@ namespace {
 
 thread_local XmlArena* current_arena = nullptr;
 
+// pugixml's allocation functions are process-wide. Those installed before the arena's (malloc and
+// free by default, or a program's own when it uses pugixml too and set them first) serve every
+// allocation outside an arena and free every block an arena does not own, so documents made
+// before, beside or after a 3MF parse keep the allocator they were made with.
+pugi::allocation_function outer_allocate = nullptr;
+pugi::deallocation_function outer_deallocate = nullptr;
+
 void* pugixml_allocate(std::size_t bytes) {
-  return current_arena ? current_arena->allocate(bytes) : std::malloc(bytes);
+  return current_arena ? current_arena->allocate(bytes) : outer_allocate(bytes);
 }
 
-// A block of the current arena is freed with the arena; anything else was malloc's.
 void pugixml_deallocate(void* p) {
-  if (!current_arena || !current_arena->owns(p)) std::free(p);
+  if (!current_arena || !current_arena->owns(p)) outer_deallocate(p);
 }
 
 }  // namespace
 
 XmlArena::XmlArena() : previous_(current_arena) {
-  static std::once_flag installed;
-  std::call_once(installed, [] {
+  // Installed at the first arena, and again if the program has since set functions of its own
+  // (which then become the outer ones).
+  static std::mutex install;
+  const std::lock_guard<std::mutex> lock(install);
+  if (pugi::get_memory_allocation_function() != pugixml_allocate) {
+    outer_allocate = pugi::get_memory_allocation_function();
+    outer_deallocate = pugi::get_memory_deallocation_function();
     pugi::set_memory_management_functions(pugixml_allocate, pugixml_deallocate);
-  });
+  }
   current_arena = this;
 }
 

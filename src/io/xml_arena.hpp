@@ -3,7 +3,8 @@
 // project runs on every first touch of a 4 KiB page costs about 15 µs
 // (detail/memory/huge_pages.hpp), which made page faults the largest cost of reading a 3MF. While
 // an XmlArena is alive, pugixml's allocations on its thread come from the arena's chunks (huge
-// pages, bump-allocated, freed all at once); elsewhere they are malloc's, as pugixml's own default.
+// pages, bump-allocated, freed all at once); elsewhere they are those of the allocation functions
+// pugixml had before the first arena (malloc's by default, or a program's own).
 #pragma once
 
 #include <cstddef>

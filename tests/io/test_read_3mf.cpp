@@ -4,8 +4,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <numbers>
+#include <pugixml.hpp>
 #include <string>
 
 #include "pgamesh/analysis/analyze.hpp"
@@ -78,6 +80,43 @@ TEST(Read3mf, BoxHasItsClosedFormFiguresAndDefaultUnit) {
   EXPECT_DOUBLE_EQ(a.mass.volume, 6.0);
   EXPECT_TRUE(a.topology->closed);
   EXPECT_EQ(a.unit, LengthUnit::millimeter);
+}
+
+// pugixml's allocation functions are process-wide, and the reader installs its own (huge-page
+// arenas during a parse). A program that uses pugixml too, with allocation functions of its own,
+// must keep them for its documents: made before a 3MF read and freed after it, or made after it.
+std::size_t program_allocations = 0, program_frees = 0;
+void* program_allocate(std::size_t bytes) {
+  ++program_allocations;
+  return std::malloc(bytes);
+}
+void program_deallocate(void* p) {
+  ++program_frees;
+  std::free(p);
+}
+
+TEST(Read3mf, AProgramsOwnPugixmlAllocatorKeepsItsDocuments) {
+  const pugi::allocation_function saved_allocate = pugi::get_memory_allocation_function();
+  const pugi::deallocation_function saved_deallocate = pugi::get_memory_deallocation_function();
+  pugi::set_memory_management_functions(program_allocate, program_deallocate);
+  program_allocations = program_frees = 0;
+  {
+    pugi::xml_document before;
+    ASSERT_TRUE(before.load_string("<parts><part name=\"a\"/><part name=\"b\"/></parts>"));
+    const std::string zip = test::threemf_package(
+        test::threemf_model(test::threemf_box(1, 1, 2, 3), "<item objectid=\"1\"/>"));
+    const std::size_t before_read = program_allocations;
+    EXPECT_DOUBLE_EQ(analyze_package(zip).mass.volume, 6.0);
+    // The reader's own trees are in its arenas, whatever the program set before.
+    EXPECT_EQ(program_allocations, before_read);
+    pugi::xml_document after;
+    ASSERT_TRUE(after.load_string("<parts><part name=\"c\"/></parts>"));
+    EXPECT_STREQ(before.first_child().last_child().attribute("name").value(), "b");
+    EXPECT_STREQ(after.first_child().first_child().attribute("name").value(), "c");
+  }
+  EXPECT_GT(program_allocations, 0u);
+  EXPECT_EQ(program_frees, program_allocations);  // every block went back where it came from
+  pugi::set_memory_management_functions(saved_allocate, saved_deallocate);
 }
 
 TEST(Read3mf, ComponentRotatedAndTranslatedThenItemRotated) {
