@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <functional>
+#include <string>
 #include <vector>
 
 #include "pgamesh/mesh/repair/hole_cap.hpp"
@@ -119,6 +120,34 @@ TEST(Repair, CapsAPlanarHole) {
   EXPECT_EQ(r.holes[0].area, 4.0);
   EXPECT_EQ(r.cap_triangles, 2u);
   expect_solid(m, 8);
+}
+
+// A cap is laid in its rim's plane; a face of the mesh through that plane inside the rim (a spike
+// standing in the open box, through its top) would cut it: the hole is refused, the mesh left open
+// and not made self-intersecting. The same box with the spike wholly inside is capped.
+TEST(Repair, RefusesACapThatWouldCrossTheMesh) {
+  const Mesh open_box =
+      without_faces(triangulated(box_mesh(2, 2, 2)), [](Vec3d p) { return p.z == 2; });
+  Mesh crossed = joined(
+      {open_box, test::tetrahedron_mesh({0.5, 0.5, 1}, {1.5, 0.5, 1}, {1, 1.5, 1}, {1, 1, 2.5})});
+  const RepairReport r = repair(crossed);
+  ASSERT_EQ(r.holes.size(), 1u);
+  EXPECT_EQ(r.holes_capped, 0u);
+  EXPECT_EQ(r.holes_refused, 1u);
+  EXPECT_EQ(r.cap_triangles, 0u);
+  EXPECT_NE(r.holes[0].refused.find("its cap would cross the mesh"), std::string::npos)
+      << r.holes[0].refused;
+  const TopologyReport t = analyze_topology(crossed);
+  EXPECT_EQ(t.boundary_edges, 4u);  // the rim, still open
+  EXPECT_EQ(t.self_intersecting_pairs, 0u);
+
+  Mesh inside = joined(
+      {open_box, test::tetrahedron_mesh({0.5, 0.5, 1}, {1.5, 0.5, 1}, {1, 1.5, 1}, {1, 1, 1.5})});
+  const RepairReport capped = repair(inside);
+  EXPECT_EQ(capped.holes_capped, 1u);
+  // The box of volume 8 with a cavity: the tetrahedron (base area 1/2·1·1, height 1/2) is
+  // enclosed by the capped box, so it is oriented inward and subtracted.
+  expect_solid(inside, 8 - 1.0 / 12);
 }
 
 // A cylinder without its top fan: the 24-gon rim capped, volume the prism's.

@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <limits>
 #include <map>
+#include <string>
 #include <utility>
 
+#include "pgamesh/mesh/topology/self_intersections.hpp"
 #include "pgamesh/mesh/topology/topology.hpp"
 #include "pgamesh/mesh/weld/weld.hpp"
 
@@ -122,6 +124,50 @@ std::size_t drop_unreferenced_vertices(Mesh& mesh) {
   return dropped;
 }
 
+// A cap is laid in its rim's plane without looking at the rest of the mesh: a part whose wall
+// bulges into the hole's plane, or two holes facing each other across a thin slot, would get a cap
+// through a face. The mesh with its caps is searched for intersecting faces, and every cap with a
+// triangle in an intersecting pair (against a face of the mesh or another hole's cap) is taken out
+// again and its hole refused. Caps are faces [first_cap_face, …) of `mesh`; cap_hole_of[k] is the
+// hole of cap face first_cap_face + k.
+Mesh without_crossing_caps(Mesh&& mesh, std::size_t first_cap_face,
+                           const std::vector<std::size_t>& cap_hole_of,
+                           std::vector<CappedHole>& holes) {
+  const SelfIntersections found =
+      find_self_intersections(mesh, std::numeric_limits<std::size_t>::max());
+  const auto hole_of = [&](std::uint32_t f) {
+    return f < first_cap_face ? holes.size() : cap_hole_of[f - first_cap_face];
+  };
+  std::vector<char> crossing(holes.size(), 0);
+  for (const SelfIntersection& x : found.list) {
+    const std::size_t h0 = hole_of(x.face0), h1 = hole_of(x.face1);
+    if (h0 == h1) continue;  // two faces of the mesh, or of one cap (meeting along its diagonals)
+    for (const std::size_t h : {h0, h1})
+      if (h < holes.size() && !crossing[h]) {
+        crossing[h] = 1;
+        const std::uint32_t other = h == h0 ? x.face1 : x.face0;
+        holes[h].refused = other < first_cap_face
+                               ? "its cap would cross the mesh (at face " + std::to_string(other) +
+                                     " of the welded mesh)"
+                               : "its cap would cross the cap of another hole";
+        holes[h].triangles = 0;
+      }
+  }
+  if (!found.complete) {  // more than a million pairs: the caps could not all be checked
+    for (CappedHole& hole : holes)
+      if (hole.refused.empty() && hole.triangles > 0) {
+        hole.refused = "its cap could not be checked against the mesh (the mesh has over " +
+                       std::to_string(max_counted_intersections) + " intersecting face pairs)";
+        hole.triangles = 0;
+      }
+  }
+  std::vector<char> keep(mesh.face_count(), 1);
+  for (std::size_t k = 0; k < cap_hole_of.size(); ++k)
+    if (!holes[cap_hole_of[k]].refused.empty()) keep[first_cap_face + k] = 0;
+  std::vector<std::uint32_t> unused_origin(mesh.face_count());
+  return keep_faces(std::move(mesh), keep, unused_origin);
+}
+
 }  // namespace
 
 RepairReport repair(Mesh& mesh, const RepairOptions& options) {
@@ -163,6 +209,8 @@ RepairReport repair(Mesh& mesh, const RepairOptions& options) {
     if (!r.boundary_loops.empty())
       for (std::size_t f = 0; f < m.face_count(); ++f)
         outlines.emplace(cycle_key(m.face(f), m.face_size(f), false), 1);
+    const std::size_t first_cap_face = m.face_count();
+    std::vector<std::size_t> cap_hole_of;  // cap face − first_cap_face → its hole in report.holes
     for (const BoundaryLoop& loop : r.boundary_loops) {
       CappedHole hole;
       std::vector<std::uint32_t> rim;
@@ -186,15 +234,22 @@ RepairReport repair(Mesh& mesh, const RepairOptions& options) {
         hole.max_deviation = c.max_deviation;
         hole.refused = c.refused;
         hole.triangles = c.triangles.size();
-        for (const auto& tri : c.triangles) m.add_face({tri[0], tri[1], tri[2]});
+        for (const auto& tri : c.triangles) {
+          m.add_face({tri[0], tri[1], tri[2]});
+          cap_hole_of.push_back(report.holes.size());
+        }
       }
+      report.holes.push_back(std::move(hole));
+    }
+    if (!cap_hole_of.empty())
+      m = without_crossing_caps(std::move(m), first_cap_face, cap_hole_of, report.holes);
+    for (const CappedHole& hole : report.holes) {
       if (hole.refused.empty()) {
         ++report.holes_capped;
         report.cap_triangles += hole.triangles;
       } else {
         ++report.holes_refused;
       }
-      report.holes.push_back(std::move(hole));
     }
     reversed.resize(m.face_count(), 0);
   }
