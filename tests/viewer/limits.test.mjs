@@ -95,7 +95,7 @@ describe('body limits', () => {
   });
 });
 
-describe('slow clients', () => {
+describe('slow clients', { concurrency: true }, () => {
   // Each byte comes well within the 5 s per-read timeout: only a whole-request deadline ends these.
   test('a request head trickled past --head-timeout is cut; other requests are answered meanwhile',
        async () => {
