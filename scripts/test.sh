@@ -53,7 +53,8 @@ stage "AddressSanitizer + UndefinedBehaviorSanitizer build (library, CLI, tests,
 cmake --preset sanitize > /dev/null
 cmake --build --preset sanitize -j "$jobs"
 stage "AddressSanitizer + UndefinedBehaviorSanitizer tests"
-ctest --preset sanitize -j "$jobs"
+# One more test program than cores: the CLI tests wait on the processes they start.
+ctest --preset sanitize -j "$((jobs + 1))"
 
 stage "libFuzzer: corpus replay, then ${PGAMESH_FUZZ_SECONDS:-6} s per harness, $jobs at a time"
 scripts/fuzz.sh "${PGAMESH_FUZZ_SECONDS:-6}"
