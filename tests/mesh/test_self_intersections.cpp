@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "pgamesh/io/read_mesh.hpp"
+#include "pgamesh/mesh/primitives.hpp"
 #include "pgamesh/mesh/topology/self_intersections.hpp"
 #include "pgamesh/mesh/topology/topology.hpp"
 #include "support/nested_shells.hpp"
@@ -232,6 +233,46 @@ TEST(SelfIntersections, PolygonsAreTestedThroughTheirFans) {
 // Random soups against the exact reference: corners on a coarse grid (shared vertices, coplanar
 // and collinear cases, touching, coincident faces), and corners anywhere (general position),
 // triangles and quads.
+// Two overlapping spheres of 20 480 triangles each: enough fan triangles that the hierarchy is
+// built in two halves on two threads and the queries run on two. Their pairs must be those of the
+// faces near the other sphere alone (a mesh small enough for one thread), face for face: only
+// faces whose boxes reach into the other sphere's box can meet it, and one sphere's faces do not
+// meet each other.
+TEST(SelfIntersections, TwoThreadHierarchyFindsWhatOneThreadFinds) {
+  const Mesh a = icosphere(5, 1.0);
+  const Mesh b = test::translated(icosphere(5, 1.0), {1.5, 0.25, 0.125});
+  const Mesh both = test::merged(a, b);
+  // The faces of `m` whose corners' box reaches x ≥ low (a) or x ≤ high (b).
+  auto near = [](const Mesh& m, auto reaches) {
+    std::vector<std::uint32_t> faces;
+    for (std::uint32_t f = 0; f < m.face_count(); ++f)
+      for (std::size_t k = 0; k < m.face_size(f); ++k)
+        if (reaches(m.vertices[m.face(f)[k]].x)) {
+          faces.push_back(f);
+          break;
+        }
+    return faces;
+  };
+  const std::vector<std::uint32_t> near_a = near(a, [](double x) { return x >= 0.45; });
+  const std::vector<std::uint32_t> near_b = near(b, [](double x) { return x <= 1.05; });
+  Mesh small;
+  small.vertices = both.vertices;
+  const auto b_base = static_cast<std::uint32_t>(a.vertices.size());
+  for (std::uint32_t f : near_a) small.add_face({a.face(f)[0], a.face(f)[1], a.face(f)[2]});
+  for (std::uint32_t f : near_b)
+    small.add_face({b.face(f)[0] + b_base, b.face(f)[1] + b_base, b.face(f)[2] + b_base});
+  ASSERT_GE(both.face_count(), 40000u);
+  ASSERT_LT(small.face_count(), 16000u);  // below two threads' worth of fan triangles
+  const IntersectingPairs found = self_intersecting_pairs_found(both);
+  IntersectingPairs expected;
+  const auto b_face = static_cast<std::uint32_t>(a.face_count());
+  for (const auto& [f0, f1] : self_intersecting_pairs_found(small))  // back to both's numbering
+    expected.emplace_back(near_a[f0], b_face + near_b[f1 - near_a.size()]);
+  std::sort(expected.begin(), expected.end());
+  EXPECT_GT(found.size(), 100u);
+  EXPECT_EQ(found, expected);
+}
+
 TEST(SelfIntersections, RandomSoupsMatchTheExactReference) {
   std::mt19937 rng(20261127);
   std::size_t total = 0;

@@ -93,13 +93,33 @@ class FanHierarchy {
  public:
   // Median splits along the longest axis of the centres' box, the items themselves reordered
   // (no permutation to apply afterwards), so that every node's items are contiguous.
+  // A large hierarchy's two halves are built on two threads, each into nodes of its own, then
+  // joined: the same splits, so the same tree, its nodes in another order.
   FanHierarchy(std::span<const Vec3d> positions, std::vector<FanItem> items)
       : positions_(positions), items_(std::move(items)) {
-    const std::size_t n = items_.size();
+    const auto n = static_cast<std::uint32_t>(items_.size());
     if (n == 0) return;
-    nodes_.reserve(2 * (n / hierarchy_leaf_size) + 1);
     nodes_.push_back({});
-    build(0, 0, static_cast<std::uint32_t>(n));
+    if (n < 2 * primitives_per_thread) {
+      nodes_.reserve(2 * (n / hierarchy_leaf_size) + 1);
+      build(nodes_, 0, 0, n);
+      return;
+    }
+    const std::uint32_t middle = split(nodes_[0], 0, n);
+    std::vector<HierarchyNode> halves[2];
+    detail::run_both(
+        true, [&] { build_half(halves[0], 0, middle); }, [&] { build_half(halves[1], middle, n); });
+    // Root, the halves' roots at 1 and 2, then the rest of each half: node k ≥ 1 of half h moves
+    // to offset[h] + k, its children with it.
+    nodes_[0].left = 1;
+    const std::uint32_t offset[2] = {2, static_cast<std::uint32_t>(2 + halves[0].size() - 1)};
+    nodes_.resize(1 + halves[0].size() + halves[1].size());
+    for (int h = 0; h < 2; ++h)
+      for (std::size_t k = 0; k < halves[h].size(); ++k) {
+        HierarchyNode node = halves[h][k];
+        if (node.left != 0) node.left += offset[h];
+        nodes_[k == 0 ? 1 + h : offset[h] + k] = node;
+      }
   }
 
   std::size_t size() const { return items_.size(); }
@@ -140,7 +160,28 @@ class FanHierarchy {
   }
 
  private:
-  void build(std::uint32_t node, std::uint32_t first, std::uint32_t end) {
+  void build_half(std::vector<HierarchyNode>& nodes, std::uint32_t first, std::uint32_t end) {
+    nodes.reserve(2 * ((end - first) / hierarchy_leaf_size) + 1);
+    nodes.push_back({});
+    build(nodes, 0, first, end);
+  }
+
+  // Node `node` of `nodes` over items [first, end), and below it its subtree.
+  void build(std::vector<HierarchyNode>& nodes, std::uint32_t node, std::uint32_t first,
+             std::uint32_t end) {
+    const std::uint32_t middle = split(nodes[node], first, end);
+    if (middle == end) return;
+    const auto left = static_cast<std::uint32_t>(nodes.size());
+    nodes[node].left = left;
+    nodes.push_back({});
+    nodes.push_back({});
+    build(nodes, left, first, middle);
+    build(nodes, left + 1, middle, end);
+  }
+
+  // Sets `node` over items [first, end) and, unless it is a leaf, reorders the items about its
+  // split; returns the split (end for a leaf).
+  std::uint32_t split(HierarchyNode& node, std::uint32_t first, std::uint32_t end) {
     FloatBox box, centres;
     for (std::uint32_t i = first; i < end; ++i) {
       const FloatBox& b = items_[i].box;
@@ -149,10 +190,10 @@ class FanHierarchy {
       for (int a = 0; a < 3; ++a) c.lo[a] = c.hi[a] = b.lo[a] / 2 + b.hi[a] / 2;
       centres.add(c);
     }
-    nodes_[node].box = box;
-    nodes_[node].first = first;
-    nodes_[node].count = end - first;
-    if (end - first <= hierarchy_leaf_size) return;
+    node.box = box;
+    node.first = first;
+    node.count = end - first;
+    if (end - first <= hierarchy_leaf_size) return end;
     int axis = 0;
     for (int a = 1; a < 3; ++a)
       if (centres.hi[a] - centres.lo[a] > centres.hi[axis] - centres.lo[axis]) axis = a;
@@ -166,12 +207,7 @@ class FanHierarchy {
     std::nth_element(
         items_.begin() + first, items_.begin() + middle, items_.begin() + end,
         [&centre](const FanItem& x, const FanItem& y) { return centre(x) < centre(y); });
-    const auto left = static_cast<std::uint32_t>(nodes_.size());
-    nodes_[node].left = left;
-    nodes_.push_back({});
-    nodes_.push_back({});
-    build(left, first, middle);
-    build(left + 1, middle, end);
+    return middle;
   }
 
   std::span<const Vec3d> positions_;
