@@ -46,7 +46,11 @@ def parser() -> argparse.ArgumentParser:
     b.add_argument("--scheduler", help="address of a running scheduler, tcp://HOST:PORT "
                                        "(default: a LocalCluster on this machine)")
     b.add_argument("--workers", type=int, default=None,
-                   help="LocalCluster worker processes (default: the number of cores)")
+                   help="LocalCluster workers: threads of one worker in this process (default: "
+                        "the number of cores)")
+    b.add_argument("--processes", action="store_true",
+                   help="LocalCluster of --workers worker processes instead of threads: a file "
+                        "that crashes the analysis takes down only its worker")
     b.add_argument("--density", type=float, help="mass per unit volume (default 1)")
     b.add_argument("--weld-tolerance", type=float,
                    help="weld vertices closer than T for the topology (default: exact)")
@@ -78,7 +82,7 @@ def batch(args: argparse.Namespace) -> int:
         client = Client(args.scheduler)
     else:
         workers = args.workers or os.cpu_count() or 1
-        cluster = local_cluster(workers)
+        cluster = local_cluster(workers, processes=args.processes)
         client = Client(cluster)
     try:
         counts = run_batch(files, args.out, client, density=args.density,

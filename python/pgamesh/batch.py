@@ -261,16 +261,24 @@ LOCAL_CLUSTER_CONFIG: Dict[str, Any] = {
 }
 
 
-def local_cluster(workers: int, threads_per_worker: int = 1, processes: bool = True) -> Any:
-    """A ``distributed.LocalCluster`` for batches: ``workers`` worker processes of one thread
-    each (the analysis of a file runs on one thread), no dashboard, :data:`LOCAL_CLUSTER_CONFIG`.
+def local_cluster(workers: int, processes: bool = False) -> Any:
+    """A ``distributed.LocalCluster`` for batches, no dashboard, :data:`LOCAL_CLUSTER_CONFIG`.
+
+    By default one worker of ``workers`` threads in this process: the analysis releases the GIL,
+    and no row is pickled or sent between processes (on a 2-core machine 2 threads beat 2 worker
+    processes, docs/python.md, "Speed"). With ``processes``, ``workers`` worker processes of one
+    thread each, under nannies: a file that crashes its worker's process takes down only that
+    worker, which is restarted and its group run again.
     """
     import dask
     from distributed import LocalCluster
 
     with dask.config.set(LOCAL_CLUSTER_CONFIG):
-        return LocalCluster(n_workers=workers, threads_per_worker=threads_per_worker,
-                            processes=processes, dashboard_address=None)
+        if processes:
+            return LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
+                                dashboard_address=None)
+        return LocalCluster(n_workers=1, threads_per_worker=workers, processes=False,
+                            dashboard_address=None)
 
 
 def run_batch(paths: Sequence[str], out: str, client: Any, *, density: Optional[float] = None,

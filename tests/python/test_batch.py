@@ -11,7 +11,8 @@ import time
 import pytest
 
 import pgamesh
-from pgamesh.batch import COLUMNS, GROUP_BYTES, analyse, expand, make_groups, run_batch
+from pgamesh.batch import (COLUMNS, GROUP_BYTES, analyse, expand, local_cluster, make_groups,
+                           run_batch)
 from conftest import BUNDLED, REPO
 
 distributed = pytest.importorskip("distributed")
@@ -197,6 +198,19 @@ def test_groups_are_consecutive_and_bounded():
     assert [k for g in groups for k in g] == mixed
     with pytest.raises(ValueError):
         make_groups(small, threads=2, group=0)
+
+
+def test_threaded_local_cluster_with_groups(files, tmp_path):
+    """The command's default cluster: worker threads in this process."""
+    paths, hostile = files
+    out = str(tmp_path / "results.jsonl")
+    with local_cluster(2) as cluster, distributed.Client(cluster) as c:
+        assert sum(w["nthreads"] for w in c.scheduler_info()["workers"].values()) == 2
+        counts = run_batch(paths, out, c, progress=False, group=3)
+    assert counts["written"] == len(paths) and counts["errors"] == len(hostile)
+    with open(out) as f:
+        rows = [{k: ("" if v is None else v) for k, v in json.loads(line).items()} for line in f]
+    check_rows(rows, paths, hostile)
 
 
 def test_expand_globs_and_unmatched_patterns():
