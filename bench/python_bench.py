@@ -5,17 +5,20 @@
    `pgamesh props` on the same file (the CLI's wall time includes its process start).
 2. The same against trimesh 4.x (load + mass_properties), when --trimesh names a folder holding
    the trimesh package (a source snapshot; it needs only numpy; never a project dependency).
-3. A batch of --small-files small binary STLs on a LocalCluster of 2 workers against 1.
+3. A batch of --small-files small binary STLs on a LocalCluster of 2 workers against 1 (the
+   median of --repeat runs each), and the same analysis in 2 plain forked processes against 1
+   (no Dask): the scaling the machine allows at the time.
 
 Usage (from the repository root, after the release build and scripts/install_python.sh):
   python3 bench/python_bench.py [--cli build/release/pgamesh]
       [--gen build/release/bench/pgamesh_gen_mesh] [--trimesh build/peers/trimesh]
-      [--triangles 1000000] [--small-files 2000] [--repeat 3]
+      [--triangles 1000000] [--small-files 2000] [--repeat 3] [--only-batch] [--group N] [--processes]
 """
 
 import argparse
 import os
 import shutil
+import statistics
 import subprocess
 import sys
 import tempfile
@@ -46,6 +49,10 @@ def main():
     p.add_argument("--small-triangles", type=int, default=2000)
     p.add_argument("--repeat", type=int, default=3)
     p.add_argument("--only-batch", action="store_true", help="only the batch measurement")
+    p.add_argument("--processes", action="store_true",
+                   help="the batch's LocalCluster of worker processes (default: threads)")
+    p.add_argument("--group", type=int, help="files per Dask task in the batch (default: "
+                                             "pgamesh.batch's automatic choice)")
     a = p.parse_args()
 
     work = tempfile.mkdtemp(prefix="pgamesh-bench-")
@@ -100,11 +107,51 @@ def single_file(a, work):
 
 
 
+def analyse_files(paths):
+    """The batch's analysis of the files, in this process, without Dask."""
+    from pgamesh.batch import analyse, file_key
+
+    for path in paths:
+        analyse(*file_key(path))
+
+
+def plain_processes(paths, processes):
+    """Seconds to analyse the files split over `processes` forked processes, without Dask: the
+    scaling the machine itself allows, the ceiling of the batch's."""
+    import multiprocessing
+
+    context = multiprocessing.get_context("fork")
+    jobs = [context.Process(target=analyse_files, args=(paths[i::processes],))
+            for i in range(processes)]
+    start = time.perf_counter()
+    for job in jobs:
+        job.start()
+    for job in jobs:
+        job.join()
+    return time.perf_counter() - start
+
+
+def cpu_seconds():
+    """(CPU seconds of this process and its children so far, of the whole machine since boot):
+    how much of the cores other work took during a run."""
+    import psutil  # a dependency of distributed
+
+    me = psutil.Process()
+    ours = sum(me.cpu_times()[:2])
+    for child in me.children(recursive=True):
+        try:
+            ours += sum(child.cpu_times()[:2])
+        except psutil.Error:
+            pass
+    machine = psutil.cpu_times()
+    return ours, machine.user + machine.nice + machine.system + machine.irq + machine.softirq
+
+
 def batch(a, work):
     """Measurement 3: many small files on 1 and 2 workers."""
-    from distributed import Client, LocalCluster
+    from distributed import Client
 
-    from pgamesh.batch import run_batch
+    from pgamesh.batch import local_cluster, run_batch
 
     small = os.path.join(work, "small")
     os.mkdir(small)
@@ -117,19 +164,38 @@ def batch(a, work):
         shutil.copyfile(seed, path)
         paths.append(path)
     os.remove(seed)
-    rates = {}
-    for workers in (1, 2):
-        with LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
-                          dashboard_address=None) as cluster, Client(cluster) as client:
-            client.submit(lambda: 0).result()  # workers up
-            out = os.path.join(work, f"batch{workers}.csv")
-            start = time.perf_counter()
-            counts = run_batch(paths, out, client, progress=False)
-            rates[workers] = time.perf_counter() - start
-            assert counts["written"] == len(paths) and counts["errors"] == 0
-        print(f"batch of {len(paths)} files x {a.small_triangles} triangles, {workers} "
-              f"worker(s): {rates[workers]:7.2f} s ({len(paths) / rates[workers]:.0f} files/s)")
-    print(f"batch speed-up 2 workers / 1: {rates[1] / rates[2]:.2f}x")
+    # The runs alternate between 1 and 2 workers, so that other work on the machine weighs on
+    # both alike; each is timed from the first submission to the last row written (the cluster's
+    # start excluded, the workers' import of pgamesh included), into a new results file.
+    times = {1: [], 2: []}
+    plain = {1: [], 2: []}
+    kind = "process(es)" if a.processes else "thread(s)"
+    for run in range(a.repeat):
+        for processes in (1, 2):
+            plain[processes].append(plain_processes(paths, processes))
+        print(f"run {run + 1}: the same files in 1 / 2 plain processes (no Dask): "
+              f"{plain[1][-1]:.2f} s / {plain[2][-1]:.2f} s, {plain[1][-1] / plain[2][-1]:.2f}x")
+        for workers in (1, 2):
+            with local_cluster(workers, processes=a.processes) as cluster, Client(cluster) as client:
+                client.submit(lambda: 0).result()  # workers up
+                out = os.path.join(work, f"batch{workers}-{run}.csv")
+                load = os.getloadavg()[0]
+                before = cpu_seconds()
+                start = time.perf_counter()
+                counts = run_batch(paths, out, client, progress=False, group=a.group)
+                times[workers].append(time.perf_counter() - start)
+                ours, everyone = (b - a for a, b in zip(before, cpu_seconds()))
+                assert counts["written"] == len(paths) and counts["errors"] == 0
+            print(f"run {run + 1}: batch of {len(paths)} files x {a.small_triangles} triangles, "
+                  f"{workers} worker {kind}: {times[workers][-1]:7.2f} s "
+                  f"({len(paths) / times[workers][-1]:.0f} files/s), load average {load:.2f}; "
+                  f"CPU s: the batch's processes {ours:.2f}, other work {everyone - ours:.2f}")
+    one, two = statistics.median(times[1]), statistics.median(times[2])
+    print(f"batch median of {a.repeat}, worker {kind}: 1: {one:.2f} s, 2: {two:.2f} s, "
+          f"speed-up 2 workers / 1: {one / two:.2f}x")
+    one, two = statistics.median(plain[1]), statistics.median(plain[2])
+    print(f"plain processes median of {a.repeat}: 1 process {one:.2f} s, 2 processes {two:.2f} s, "
+          f"speed-up {one / two:.2f}x")
 
 
 if __name__ == "__main__":

@@ -19,6 +19,16 @@ def _vector(text: str) -> tuple:
     return tuple(float(p) for p in parts)
 
 
+def _positive(text: str) -> int:
+    try:
+        value = int(text)
+    except ValueError:
+        value = 0
+    if value < 1:
+        raise argparse.ArgumentTypeError(f"expected a whole number of at least 1, not {text!r}")
+    return value
+
+
 def parser() -> argparse.ArgumentParser:
     """The command line of ``python3 -m pgamesh``."""
     p = argparse.ArgumentParser(prog="python3 -m pgamesh",
@@ -36,7 +46,11 @@ def parser() -> argparse.ArgumentParser:
     b.add_argument("--scheduler", help="address of a running scheduler, tcp://HOST:PORT "
                                        "(default: a LocalCluster on this machine)")
     b.add_argument("--workers", type=int, default=None,
-                   help="LocalCluster worker processes (default: the number of cores)")
+                   help="LocalCluster workers: threads of one worker in this process (default: "
+                        "the number of cores)")
+    b.add_argument("--processes", action="store_true",
+                   help="LocalCluster of --workers worker processes instead of threads: a file "
+                        "that crashes the analysis takes down only its worker")
     b.add_argument("--density", type=float, help="mass per unit volume (default 1)")
     b.add_argument("--weld-tolerance", type=float,
                    help="weld vertices closer than T for the topology (default: exact)")
@@ -44,18 +58,19 @@ def parser() -> argparse.ArgumentParser:
                    help="also a gauge table of N + 1 levels per file (closed meshes)")
     b.add_argument("--up", type=_vector, default=(0.0, 0.0, 1.0), metavar="X,Y,Z",
                    help="up vector of the fuel table (default 0,0,1)")
-    b.add_argument("--files-per-task", type=int, metavar="N",
-                   help="files analysed by one Dask task (default: 1 for a small batch, up to "
-                        "32 for a large one)")
+    b.add_argument("--group", type=_positive, metavar="N",
+                   help="files analysed by one Dask task (default: about 16 tasks per worker "
+                        "thread, at most 32 files and 8 MB a task; 1 file a task for a small "
+                        "batch)")
     b.add_argument("--no-progress", action="store_true", help="no progress bar on stderr")
     return p
 
 
 def batch(args: argparse.Namespace) -> int:
     """Runs the batch command; returns the exit status."""
-    from distributed import Client, LocalCluster
+    from distributed import Client
 
-    from .batch import expand, run_batch
+    from .batch import expand, local_cluster, run_batch
 
     files, unmatched = expand(args.paths)
     for pattern in unmatched:
@@ -67,14 +82,13 @@ def batch(args: argparse.Namespace) -> int:
         client = Client(args.scheduler)
     else:
         workers = args.workers or os.cpu_count() or 1
-        cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
-                               dashboard_address=None)
+        cluster = local_cluster(workers, processes=args.processes)
         client = Client(cluster)
     try:
         counts = run_batch(files, args.out, client, density=args.density,
                            weld_tolerance=args.weld_tolerance, fuel_table=args.fuel_table,
                            up=args.up, progress=not args.no_progress,
-                           files_per_task=args.files_per_task)
+                           group=args.group)
     finally:
         client.close()
         if cluster is not None:

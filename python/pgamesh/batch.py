@@ -1,19 +1,20 @@
 """Batches of mesh files on Dask: ``python3 -m pgamesh batch PATHS_OR_GLOBS... --out FILE``.
 
-Every file is analysed in a Dask task that runs :func:`pgamesh.analyze_file` (the figures of
-``pgamesh props --json``) and returns one row; the client writes the rows to the output (CSV or
-JSON Lines, by the extension) as the futures complete, and flushes them. So:
+The files are analysed in Dask tasks of a group of files each (``--group N``; by default about
+16 groups per worker thread, at most 32 files and 8 MB a group): a Dask task costs the scheduler
+and the client a few milliseconds, more than a small part's analysis. Each file's row holds the
+figures of :func:`pgamesh.analyze_file` (``pgamesh props --json``); the client writes a group's
+rows to the output (CSV or JSON Lines, by the extension) when its task completes, and flushes
+them. So:
 
-* a file that fails records its error in the ``error`` column and the batch goes on;
+* a file that fails records its error in the ``error`` column and the batch goes on (a group
+  whose task fails as a whole, its worker killed again and again, is retried file by file, so
+  only the file at fault records the error);
 * re-running with the same ``--out`` skips the files already in it, keyed by path, size and
   modification time (a file that changed is analysed again);
 * a worker killed mid-run loses nothing: the scheduler runs its tasks again elsewhere, and since
   only the client writes, and it writes a task's rows once, when its future completes, no row
   appears twice.
-
-Small files are sent in groups (``--files-per-task``; by default 1 for a small batch, up to 32
-for a large one): a Dask task costs the scheduler and the client more than a small part's
-analysis.
 
 docs/python.md shows it on a LocalCluster and on a cluster of ``dask-scheduler`` and
 ``dask-worker`` processes (``--scheduler tcp://HOST:PORT``).
@@ -104,7 +105,7 @@ def analyse(path: str, size: int, mtime_ns: int, density: Optional[float] = None
 
 
 class RowWriter:
-    """Appends rows to a CSV or JSON Lines file, one flushed line per row.
+    """Appends rows to a CSV or JSON Lines file, a line per row, flushed after each group.
 
     Opening an existing file reads the keys of the rows it holds (:attr:`done`); a last line cut
     short by an interrupted run is removed first.
@@ -124,9 +125,9 @@ class RowWriter:
                         continue
         new = not os.path.exists(path) or os.path.getsize(path) == 0
         self._file = open(path, "a", newline="", encoding="utf-8")
-        self._csv = None if self.jsonl else csv.DictWriter(self._file, fieldnames=COLUMNS)
+        self._csv = None if self.jsonl else csv.writer(self._file)
         if self._csv is not None and new:
-            self._csv.writeheader()
+            self._csv.writerow(COLUMNS)
             self._file.flush()
 
     def _drop_partial_line(self) -> None:
@@ -145,20 +146,25 @@ class RowWriter:
         else:
             yield from csv.DictReader(f)
 
-    def write(self, row: Dict[str, Any]) -> bool:
-        """Writes the row unless its file is already done; returns whether it wrote."""
-        key = (row["path"], int(row["size"]), int(row["mtime_ns"]))
-        if key in self.done:
-            return False
-        if self.jsonl:
-            self._file.write(json.dumps(row, allow_nan=False, default=str) + "\n")
-        else:
-            self._csv.writerow({k: ("" if v is None else v) for k, v in row.items()})
+    def write(self, rows: Iterable[Dict[str, Any]]) -> Tuple[int, int]:
+        """Writes the rows whose files are not done yet, then flushes once; returns (rows
+        written, errors among them)."""
+        written = errors = 0
+        for row in rows:
+            key = (row["path"], int(row["size"]), int(row["mtime_ns"]))
+            if key in self.done:
+                continue
+            if self.jsonl:
+                self._file.write(json.dumps(row, allow_nan=False, default=str) + "\n")
+            else:
+                self._csv.writerow([row.get(c) for c in COLUMNS])  # None is written as ""
+            self.done.add(key)
+            written += 1
+            errors += bool(row.get("error"))
         # Flushed, not synced: a killed client leaves every written line in the page cache (a
-        # sync per row would cost more than analysing a small part). close() syncs.
+        # sync per group would cost more than analysing it). close() syncs.
         self._file.flush()
-        self.done.add(key)
-        return True
+        return written, errors
 
     def close(self) -> None:
         """Syncs the file to disk and closes it."""
@@ -168,7 +174,7 @@ class RowWriter:
 
 
 class Progress:
-    """A one-line progress bar on stderr (redrawn in place on a terminal)."""
+    """A one-line progress bar of files on stderr (redrawn in place on a terminal)."""
 
     def __init__(self, total: int, enabled: bool = True) -> None:
         self.total, self.done, self.errors = total, 0, 0
@@ -177,9 +183,10 @@ class Progress:
         self.start = time.monotonic()
         self._last = 0.0
 
-    def step(self, error: bool) -> None:
-        self.done += 1
-        self.errors += bool(error)
+    def step(self, files: int, errors: int) -> None:
+        """Counts `files` more files done, `errors` of them failed."""
+        self.done += files
+        self.errors += errors
         now = time.monotonic()
         if self.enabled and (now - self._last > 0.2 or self.done == self.total):
             self._last = now
@@ -193,83 +200,150 @@ class Progress:
             sys.stderr.flush()
 
 
+#: The most files and bytes an automatic group holds: enough that a Dask task (a few
+#: milliseconds of the scheduler's and the client's time) costs little next to the analysis, few
+#: enough that the last groups still spread over the workers (docs/python.md, "Batches on Dask").
+GROUP_FILES = 32
+GROUP_BYTES = 8 << 20
+#: An automatic group is small enough that every worker thread gets at least this many groups.
+GROUPS_PER_THREAD = 16
+
+
 def analyse_group(keys: Sequence[Key], task: Callable[..., Dict[str, Any]],
                   **options: Any) -> List[Dict[str, Any]]:
     """The rows of a group of files, each by ``task`` (runs on a worker as one Dask task)."""
     return [task(path, size, mtime_ns, **options) for path, size, mtime_ns in keys]
 
 
-def default_files_per_task(files: int, workers: int) -> int:
-    """Files per task: 1 for a small batch; for a large one, enough that each worker still gets
-    at least 16 tasks (load balance, progress) but at most 32 files a task. A task costs the
-    scheduler and the client a few milliseconds, more than analysing a small part."""
-    return max(1, min(32, files // (16 * max(workers, 1))))
+def make_groups(keys: Sequence[Key], threads: int, group: Optional[int] = None) -> List[List[Key]]:
+    """The files split into consecutive groups, one Dask task each.
+
+    With ``group``, groups of that many files. Otherwise at most :data:`GROUP_FILES` files and,
+    past the first file, :data:`GROUP_BYTES` bytes a group, and small enough that each of the
+    cluster's ``threads`` gets :data:`GROUPS_PER_THREAD` groups (a small batch: one file a task).
+    """
+    if group is not None:
+        if group < 1:
+            raise ValueError("a group holds at least one file")
+        return [list(keys[i:i + group]) for i in range(0, len(keys), group)]
+    most = max(1, min(GROUP_FILES, len(keys) // (GROUPS_PER_THREAD * max(threads, 1))))
+    groups: List[List[Key]] = []
+    current: List[Key] = []
+    size = 0
+    for key in keys:
+        if current and (len(current) == most or size + key[1] > GROUP_BYTES):
+            groups.append(current)
+            current, size = [], 0
+        current.append(key)
+        size += key[1]
+    if current:
+        groups.append(current)
+    return groups
+
+
+def error_row(key: Key, error: str, weld_tolerance: Optional[float] = None) -> Dict[str, Any]:
+    """The row of a file that has no figures, only an error."""
+    row: Dict[str, Any] = {c: None for c in COLUMNS}
+    row.update(path=key[0], size=key[1], mtime_ns=key[2], weld_tolerance=weld_tolerance or 0.0,
+               error=error)
+    return row
+
+
+#: Dask settings of the LocalCluster a batch starts. The workers' statistical profiler, the
+#: 20 ms event-loop tick and the system monitor feed a dashboard and diagnostics a batch has no
+#: use for; at their defaults they keep an idle 2-worker cluster busy for about 14 % of a core,
+#: taken from the analysis (docs/python.md, "Speed").
+LOCAL_CLUSTER_CONFIG: Dict[str, Any] = {
+    "distributed.worker.profile.enabled": False,
+    "distributed.admin.tick.interval": "1s",
+    "distributed.admin.system-monitor.interval": "2s",
+    "distributed.worker.memory.monitor-interval": "500ms",
+}
+
+
+def local_cluster(workers: int, processes: bool = False) -> Any:
+    """A ``distributed.LocalCluster`` for batches, no dashboard, :data:`LOCAL_CLUSTER_CONFIG`.
+
+    By default one worker of ``workers`` threads in this process: the analysis releases the GIL,
+    and no row is pickled or sent between processes (on a 2-core machine 2 threads beat 2 worker
+    processes, docs/python.md, "Speed"). With ``processes``, ``workers`` worker processes of one
+    thread each, under nannies: a file that crashes its worker's process takes down only that
+    worker, which is restarted and its group run again.
+    """
+    import dask
+    from distributed import LocalCluster
+
+    with dask.config.set(LOCAL_CLUSTER_CONFIG):
+        if processes:
+            return LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
+                                dashboard_address=None)
+        return LocalCluster(n_workers=1, threads_per_worker=workers, processes=False,
+                            dashboard_address=None)
 
 
 def run_batch(paths: Sequence[str], out: str, client: Any, *, density: Optional[float] = None,
               weld_tolerance: Optional[float] = None, fuel_table: Optional[int] = None,
               up: Sequence[float] = (0.0, 0.0, 1.0), progress: bool = True,
-              files_per_task: Optional[int] = None,
+              group: Optional[int] = None,
               task: Callable[..., Dict[str, Any]] = analyse) -> Dict[str, int]:
     """Analyses the files on the Dask ``client`` and appends one row per file to ``out``.
 
     Files whose (path, size, mtime) is already in ``out`` are skipped. The files go to the
-    workers in tasks of ``files_per_task`` files (default :func:`default_files_per_task`); the
-    rows of a task are written when it completes, so a task run again after its worker died
-    still writes each row once. ``task`` is the function run per file (default
-    :func:`analyse`). Returns counts: files, skipped, written, errors.
+    workers in groups, one Dask task each: ``group`` files a task, or :func:`make_groups`'
+    automatic choice. A group's rows are written when its task completes, so a task run again
+    after its worker died still writes each row once. A task that fails as a whole (its worker
+    killed again and again) is split into tasks of one file, so that only the file at fault gets
+    the error. ``task`` is the function run per file (default :func:`analyse`). Returns counts:
+    files, skipped, written, errors.
     """
     from distributed import as_completed
 
     writer = RowWriter(out)
     try:
         todo: List[Key] = []
-        skipped = 0
+        skipped = written = errors = 0
         for path in paths:
             try:
                 key = file_key(path)
             except OSError as e:
-                row = {c: None for c in COLUMNS}
-                row.update(path=path, size=-1, mtime_ns=-1, error=f"OSError: {e}")
-                writer.write(row)
+                new, failed = writer.write([error_row((path, -1, -1), f"OSError: {e}")])
+                written += new
+                errors += failed
                 continue
             if key in writer.done:
                 skipped += 1
             else:
                 todo.append(key)
-        if files_per_task is None:
-            workers = len(client.scheduler_info().get("workers", {}))
-            files_per_task = default_files_per_task(len(todo), workers)
-        if files_per_task < 1:
-            raise ValueError("files_per_task must be at least 1")
+        threads = sum(w.get("nthreads", 1)
+                      for w in client.scheduler_info().get("workers", {}).values())
+        groups = make_groups(todo, threads, group)
+        options = dict(density=density, weld_tolerance=weld_tolerance, fuel_table=fuel_table,
+                       up=tuple(up))
         bar = Progress(len(todo), progress)
-        written = errors = 0
-        groups = {}
-        for first in range(0, len(todo), files_per_task):
-            group = todo[first:first + files_per_task]
-            # pure=False: a new run of unchanged files is a new task, never a stale result.
-            future = client.submit(analyse_group, group, task, density=density,
-                                   weld_tolerance=weld_tolerance, fuel_table=fuel_table,
-                                   up=tuple(up), pure=False)
-            groups[future] = group
-        for future in as_completed(list(groups)):
-            group = groups.pop(future)
+        # One call for every group: the client's cost of a submission (it reads the caller's
+        # source for the scheduler's records) is paid once, not per task. pure=False: a new run
+        # of unchanged files is a new task, never a stale result.
+        futures = client.map(analyse_group, groups, task=task, pure=False, **options)
+        pending = dict(zip(futures, groups))
+        completed = as_completed(futures)
+        for future in completed:
+            keys = pending.pop(future)
             try:
                 rows = future.result()
             except Exception as e:  # the task itself died (its worker killed too often)
-                rows = []
-                for path, size, mtime_ns in group:
-                    row = {c: None for c in COLUMNS}
-                    row.update(path=path, size=size, mtime_ns=mtime_ns,
-                               weld_tolerance=weld_tolerance or 0.0,
-                               error=f"{type(e).__name__}: {e}")
-                    rows.append(row)
+                if len(keys) > 1:
+                    for key in keys:
+                        single = client.submit(analyse_group, [key], task, pure=False, **options)
+                        pending[single] = [key]
+                        completed.add(single)
+                    future.release()
+                    continue
+                rows = [error_row(keys[0], f"{type(e).__name__}: {e}", weld_tolerance)]
             future.release()
-            for row in rows:
-                if writer.write(row):
-                    written += 1
-                    errors += bool(row.get("error"))
-                bar.step(bool(row.get("error")))
+            new, failed = writer.write(rows)
+            written += new
+            errors += failed
+            bar.step(len(rows), sum(bool(r.get("error")) for r in rows))
         return {"files": len(paths), "skipped": skipped, "written": written, "errors": errors}
     finally:
         writer.close()

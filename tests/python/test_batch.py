@@ -6,11 +6,13 @@ import os
 import signal
 import subprocess
 import sys
+import time
 
 import pytest
 
 import pgamesh
-from pgamesh.batch import COLUMNS, analyse, expand, run_batch
+from pgamesh.batch import (COLUMNS, GROUP_BYTES, analyse, expand, local_cluster, make_groups,
+                           run_batch)
 from conftest import BUNDLED, REPO
 
 distributed = pytest.importorskip("distributed")
@@ -69,20 +71,26 @@ def check_rows(rows, paths, hostile):
             assert int(r["triangles"]) == doc["triangles"]
 
 
-def test_batch_with_hostile_files_then_resume(client, files, tmp_path):
+# group=None: the automatic choice, one file a task for so few files; 4: groups holding hostile
+# files among good ones.
+@pytest.mark.parametrize("group", [None, 4])
+def test_batch_with_hostile_files_then_resume(client, files, tmp_path, capsys, group):
     paths, hostile = files
     out = str(tmp_path / "results.csv")
-    first = run_batch(paths[:5], out, client, progress=False)
+    first = run_batch(paths[:5], out, client, progress=False, group=group)
     assert first["written"] == 5
-    counts = run_batch(paths, out, client, progress=False)
+    counts = run_batch(paths, out, client, progress=True, group=group)
     assert counts["skipped"] == 5 and counts["written"] == len(paths) - 5
     assert counts["errors"] == len(hostile & set(paths[5:]))
     check_rows(read_rows(out), paths, hostile)
+    # The progress bar counts files, not tasks.
+    last = capsys.readouterr().err.strip().splitlines()[-1]
+    assert f" {len(paths) - 5}/{len(paths) - 5} files, {counts['errors']} errors" in last
     # Nothing left to do; a changed file is analysed again.
-    assert run_batch(paths, out, client, progress=False)["written"] == 0
+    assert run_batch(paths, out, client, progress=False, group=group)["written"] == 0
     st = os.stat(paths[0])
     os.utime(paths[0], ns=(st.st_atime_ns, st.st_mtime_ns + 10 ** 9))
-    assert run_batch(paths, out, client, progress=False)["written"] == 1
+    assert run_batch(paths, out, client, progress=False, group=group)["written"] == 1
 
 
 def test_interrupted_line_is_dropped_on_resume(client, files, tmp_path):
@@ -97,33 +105,112 @@ def test_interrupted_line_is_dropped_on_resume(client, files, tmp_path):
     assert sorted(r["path"] for r in rows) == sorted(paths)
 
 
-def kill_worker_on(victim, marker):
-    """A task that kills its own worker process (SIGKILL) the first time it meets `victim`."""
+def data_rows(out):
+    """The rows in a results file being written (the header and a partial line not counted)."""
+    try:
+        with open(out, newline="") as f:
+            return max(0, f.read().count("\n") - 1)
+    except FileNotFoundError:
+        return 0
+
+
+def kill_worker_on(victim, marker, out):
+    """A task that kills its own worker process (SIGKILL) the first time it meets `victim`, once
+    the client has written some rows (so mid-run): `marker` records how many."""
 
     def task(path, size, mtime_ns, **options):
-        if os.path.basename(path) == victim:
+        if os.path.basename(path) == victim and not os.path.exists(marker):
+            for _ in range(500):  # up to 10 s for another task's rows
+                if data_rows(out) > 0:
+                    break
+                time.sleep(0.02)
             try:
-                os.close(os.open(marker, os.O_CREAT | os.O_EXCL))
-                os.kill(os.getpid(), signal.SIGKILL)
+                fd = os.open(marker, os.O_CREAT | os.O_EXCL | os.O_WRONLY)
             except FileExistsError:
                 pass
+            else:
+                os.write(fd, str(data_rows(out)).encode())
+                os.close(fd)
+                os.kill(os.getpid(), signal.SIGKILL)
         return analyse(path, size, mtime_ns, **options)
 
     return task
 
 
-@pytest.mark.parametrize("files_per_task", [1, 3])
-def test_killed_worker_loses_and_duplicates_nothing(client, files, tmp_path, files_per_task):
+@pytest.mark.parametrize("group", [1, 3])
+def test_killed_worker_loses_and_duplicates_nothing(client, files, tmp_path, group):
     paths, hostile = files
     out = str(tmp_path / "results.csv")
     marker = str(tmp_path / "killed")
     victim = os.path.basename(paths[len(paths) // 2])
-    counts = run_batch(paths, out, client, progress=False, files_per_task=files_per_task,
-                       task=kill_worker_on(victim, marker))
-    assert os.path.exists(marker)  # a worker did die
+    counts = run_batch(paths, out, client, progress=False, group=group,
+                       task=kill_worker_on(victim, marker, out))
+    with open(marker) as f:  # a worker did die, mid-run: rows before, the victim's group after
+        rows_at_kill = int(f.read())
+    assert 0 < rows_at_kill <= len(paths) - group
     assert counts["written"] == len(paths)
     check_rows(read_rows(out), paths, hostile)
     client.wait_for_workers(2, timeout=60)  # the nanny restarted it
+
+
+def raise_on(victim):
+    """A task that raises (not a row with an error: the whole Dask task fails) on `victim`."""
+
+    def task(path, size, mtime_ns, **options):
+        if os.path.basename(path) == victim:
+            raise RuntimeError("a task that failed as a whole")
+        return analyse(path, size, mtime_ns, **options)
+
+    return task
+
+
+def test_failed_group_is_retried_file_by_file(client, files, tmp_path):
+    paths, hostile = files
+    out = str(tmp_path / "results.csv")
+    victim = paths[1]  # in the first group of 4, with good and (further on) hostile files
+    counts = run_batch(paths, out, client, progress=False, group=4,
+                       task=raise_on(os.path.basename(victim)))
+    assert counts["written"] == len(paths)
+    assert counts["errors"] == len(hostile) + 1
+    rows = read_rows(out)
+    assert [r["error"] for r in rows if r["path"] == victim] == [
+        "RuntimeError: a task that failed as a whole"]
+    check_rows([r for r in rows if r["path"] != victim], [p for p in paths if p != victim],
+               hostile)
+
+
+def test_groups_are_consecutive_and_bounded():
+    small = [(f"f{i}", 1000, 0) for i in range(100)]
+    # 2 threads, 16 groups each at least: 100 // 32 = 3 files a group.
+    groups = make_groups(small, threads=2)
+    assert [len(g) for g in groups] == [3] * 33 + [1]
+    assert [k for g in groups for k in g] == small
+    assert [len(g) for g in make_groups(small, threads=2, group=40)] == [40, 40, 20]
+    assert [len(g) for g in make_groups(small[:5], threads=2)] == [1] * 5
+    assert [len(g) for g in make_groups(small * 100, threads=1)] == [32] * 312 + [16]
+    # By bytes: files of 3/8 of the limit go two a group (64 files would allow 4), and a file
+    # above the limit is alone.
+    big = [(f"b{i}", GROUP_BYTES * 3 // 8, 0) for i in range(63)]
+    mixed = big[:31] + [("huge", GROUP_BYTES * 2, 0)] + big[31:]
+    groups = make_groups(mixed, threads=1)
+    assert [len(g) for g in groups] == [2] * 15 + [1, 1] + [2] * 16
+    assert groups[16] == [("huge", GROUP_BYTES * 2, 0)]
+    assert [k for g in groups for k in g] == mixed
+    with pytest.raises(ValueError):
+        make_groups(small, threads=2, group=0)
+
+
+def test_threaded_local_cluster_with_groups(files, tmp_path):
+    """The command's default cluster: worker threads in this process."""
+    paths, hostile = files
+    out = str(tmp_path / "results.jsonl")
+    with local_cluster(2) as cluster, distributed.Client(cluster) as c:
+        assert sum(w["nthreads"] for w in c.scheduler_info()["workers"].values()) == 2
+        counts = run_batch(paths, out, c, progress=False, group=3)
+    assert counts["written"] == len(paths) and counts["errors"] == len(hostile)
+    with open(out) as f:
+        rows = [{k: ("" if v is None else v) for k, v in json.loads(line).items()} for line in f]
+    check_rows(rows, paths, hostile)
 
 
 def test_expand_globs_and_unmatched_patterns():
@@ -137,7 +224,7 @@ def test_command_line(tmp_path):
     out = tmp_path / "r.csv"
     p = subprocess.run([sys.executable, "-m", "pgamesh", "batch", str(REPO / "data/meshes/*.stl"),
                         str(REPO / "data/meshes/*.obj"), "--out", str(out), "--workers", "1",
-                        "--fuel-table", "4", "--up", "0,0,1", "--no-progress"],
+                        "--fuel-table", "4", "--up", "0,0,1", "--group", "2", "--no-progress"],
                        capture_output=True, text=True, timeout=100)
     rows = read_rows(out)
     assert len(rows) == len(BUNDLED), p.stderr
