@@ -2,6 +2,7 @@
 // names (DNS rebinding) and from other sites' pages, addresses other machines reach unless asked
 // for, and command lines naming what cannot be served.
 import assert from 'node:assert/strict';
+import { readFileSync } from 'node:fs';
 import net from 'node:net';
 import { after, before, describe, test } from 'node:test';
 
@@ -95,7 +96,7 @@ describe('body limits', () => {
   });
 });
 
-describe('slow clients', { concurrency: true }, () => {
+describe('requests that never end', { concurrency: true }, () => {
   // Each byte comes well within the 5 s per-read timeout: only a whole-request deadline ends these.
   test('a request head trickled past --head-timeout is cut; other requests are answered meanwhile',
        async () => {
@@ -132,6 +133,45 @@ describe('slow clients', { concurrency: true }, () => {
       const prompt = await fetch(new URL('/api/upload?name=t.obj', strict.url),
                                  { method: 'POST', body });
       assert.equal(prompt.status, 201);
+    } finally {
+      await strict.stop();
+    }
+  });
+
+  test('a head of endless header lines is cut at 64 KiB; the server stays small and answers',
+       async () => {
+    // httplib bounds each header line, not their number: before the cap, 8 s of this put
+    // 290 MB of headers into the server.
+    const strict = await startServer(['--quiet']);
+    try {
+      const { hostname, port } = new URL(strict.url);
+      const line = `X-Filler: ${'a'.repeat(100)}\r\n`.repeat(1000);  // 112 KB a write
+      const sent = await new Promise((resolvePromise) => {
+        let bytes = 0, done = false;
+        const socket = net.connect(Number(port), hostname, () => {
+          socket.write(`GET /api/info HTTP/1.1\r\nHost: ${new URL(strict.url).host}\r\n`);
+          const more = () => {
+            if (done) return;
+            if (bytes > 64 * 1024 * 1024) return finish();  // never cut: give up at 64 MB
+            bytes += line.length;
+            if (socket.write(line)) setImmediate(more); else socket.once('drain', more);
+          };
+          more();
+        });
+        const finish = () => {
+          if (done) return;
+          done = true;
+          socket.destroy();
+          resolvePromise(bytes);
+        };
+        socket.on('close', finish);
+        socket.on('error', finish);
+      });
+      assert.ok(sent < 16 * 1024 * 1024, `${sent} bytes of headers sent before the cut`);
+      const status = readFileSync(`/proc/${strict.child.pid}/status`, 'utf8');
+      const hwm = Number(/VmHWM:\s+(\d+) kB/.exec(status)[1]) * 1024;
+      assert.ok(hwm < 100 * 1024 * 1024, `peak RSS ${hwm} bytes`);
+      await serverAnswers(strict.url);
     } finally {
       await strict.stop();
     }

@@ -22,6 +22,21 @@ extern "C" int accept(int fd, sockaddr* __restrict address, socklen_t* __restric
   return sock;
 }
 
+// httplib 0.11 bounds each header line (8 KiB) but not their number: a client could send hundreds
+// of megabytes of header lines within the head deadline, all kept in memory. The bytes a worker
+// receives while a request head is due are counted here (httplib reads through `recv`), and a
+// head over its limit ends the connection.
+extern "C" ssize_t recv(int fd, void* buffer, size_t length, int flags) {
+  const auto got =
+      static_cast<ssize_t>(::syscall(SYS_recvfrom, fd, buffer, length, flags, nullptr, nullptr));
+  if (got > 0 &&
+      !pgamesh::viewer::RequestWatchdog::head_bytes_received(static_cast<std::size_t>(got))) {
+    ::shutdown(fd, SHUT_RDWR);
+    return 0;  // as if the client had closed: httplib ends the connection
+  }
+  return got;
+}
+
 namespace pgamesh::viewer {
 
 namespace {
@@ -103,7 +118,16 @@ void RequestWatchdog::phase(bool in_head) {
   auto* c = static_cast<Connection*>(current.connection);
   std::lock_guard<std::mutex> lock(mutex_);
   c->in_head = in_head;
+  c->head_bytes = 0;
   c->since = std::chrono::steady_clock::now();
+}
+
+bool RequestWatchdog::head_bytes_received(std::size_t bytes) {
+  if (!current.watchdog) return true;
+  auto* c = static_cast<Connection*>(current.connection);
+  if (!c->in_head) return true;  // only this thread changes it
+  c->head_bytes += bytes;
+  return c->head_bytes <= current.watchdog->deadlines_.head_bytes;
 }
 
 void RequestWatchdog::head_received() {

@@ -6,7 +6,8 @@
 //  * the head: from the moment a worker takes the connection, or from the end of the previous
 //    answer on a kept-alive connection, the request line and headers must be in within `head`;
 //  * the rest: from the end of the head, the body must be read and the answer written within
-//    `request`.
+//    `request`;
+//  * and a head may not exceed `head_bytes` (httplib bounds each header line, not their number).
 //
 // Shutting the socket down (not closing it) makes httplib's blocked read or write fail; httplib
 // then ends the connection and closes the socket itself.
@@ -26,6 +27,9 @@ namespace pgamesh::viewer {
 struct RequestDeadlines {
   std::chrono::milliseconds head{10000};
   std::chrono::milliseconds request{60000};
+  // Bytes a worker may receive while a request head is due: the line and headers, and what
+  // httplib's 4 KiB line buffer reads beyond them. A head over it ends the connection.
+  std::size_t head_bytes = std::size_t{64} << 10;
 };
 
 class RequestWatchdog {
@@ -42,6 +46,9 @@ class RequestWatchdog {
   // from the logger (the answer is out).
   static void head_received();
   static void answer_sent();
+  // Counts bytes received on this worker's connection while its request head is due; false when
+  // they exceed RequestDeadlines::head_bytes (the connection is then ended).
+  static bool head_bytes_received(std::size_t bytes);
 
  private:
   struct Connection {
@@ -49,6 +56,7 @@ class RequestWatchdog {
     bool started = false;
     bool in_head = true;
     bool cut = false;
+    std::size_t head_bytes = 0;  // received since the head became due; this worker's own count
     std::chrono::steady_clock::time_point since;
   };
   class WatchedQueue;
