@@ -3,9 +3,10 @@
 nested cubes (sides 8, 4, 2), a hollow cube (8 with a cavity of 1), two separate solids and a
 torus (R 4, r 2) with a toroidal cavity (R 4, r 1), each right and with shells turned the wrong
 way; faces as triangles. Usage: orientation_meshes.py DIR"""
-import math
 import os
 import sys
+
+import bench_meshes
 
 CUBE_FACES = [(0, 3, 2, 1), (4, 5, 6, 7), (0, 1, 5, 4), (2, 3, 7, 6), (1, 2, 6, 5), (0, 4, 7, 3)]
 
@@ -19,18 +20,7 @@ def cube(side, centre, outward):
 
 
 def torus(major, minor, around, across, outward):
-    v = []
-    for i in range(around):
-        u = 2 * math.pi * i / around
-        for j in range(across):
-            w = 2 * math.pi * j / across
-            rho = major + minor * math.cos(w)
-            v.append((rho * math.cos(u), rho * math.sin(u), minor * math.sin(w)))
-    at = lambda i, j: (i % around) * across + (j % across)
-    f = [(at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)) for i in range(around) for j in range(across)]
-    if not outward:
-        f = [tuple(reversed(q)) for q in f]
-    return v, f
+    return bench_meshes.torus(major, minor, around, across, outward=outward)
 
 
 def write(path, shells):

@@ -9,6 +9,8 @@ import os
 import random
 import sys
 
+import bench_meshes
+
 CUBE_FACES = [(0, 2, 3), (0, 3, 1), (4, 5, 7), (4, 7, 6), (0, 1, 5), (0, 5, 4),
               (2, 6, 7), (2, 7, 3), (0, 4, 6), (0, 6, 2), (1, 3, 7), (1, 7, 5)]
 
@@ -53,21 +55,8 @@ def sphere(radius, stacks, slices, wobble=0.0, seed=1):
 
 
 def torus(major, minor, around, across, centre):
-    v = []
-    for i in range(around):
-        u = 2 * math.pi * i / around
-        for j in range(across):
-            w = 2 * math.pi * j / across
-            r = major + minor * math.cos(w)
-            v.append((centre[0] + r * math.cos(u), centre[1] + r * math.sin(u),
-                      centre[2] + minor * math.sin(w)))
-    f = []
-    idx = lambda i, j: (i % around) * across + j % across
-    for i in range(around):
-        for j in range(across):
-            a, b, c, d = idx(i, j), idx(i + 1, j), idx(i + 1, j + 1), idx(i, j + 1)
-            f += [(a, b, c), (a, c, d)]
-    return v, f
+    v, quads = bench_meshes.torus(major, minor, around, across, centre)
+    return v, bench_meshes.fans(quads)
 
 
 def write_off(path, mesh):

@@ -15,6 +15,7 @@
 #include "pgamesh/core/input_error.hpp"
 #include "pgamesh/io/read_mesh.hpp"
 #include "pgamesh/io/write_mesh.hpp"
+#include "support/solids.hpp"
 #include "support/temp_file.hpp"
 
 namespace pgamesh {
@@ -429,20 +430,8 @@ TEST(ReadGltf, ExternalBufferBesideTheFileAndNotOutsideIt) {
 // the mesh read back has the same vertices and the fans of its faces, so the same mass properties
 // bit for bit.
 TEST(WriteGltf, RoundTripIsExactForFloat32Coordinates) {
-  Mesh m;
-  m.vertices = {{0, 0, 0},    {2.5, 0, 0},    {2.5, 1.25, 0},    {0, 1.25, 0},
-                {0, 0, 0.75}, {2.5, 0, 0.75}, {2.5, 1.25, 0.75}, {0, 1.25, 0.75}};
-  m.add_face({0, 3, 2, 1});  // quads: written as fans
-  m.add_face({4, 5, 6, 7});
-  m.add_face({0, 1, 5, 4});
-  m.add_face({1, 2, 6, 5});
-  m.add_face({2, 3, 7, 6});
-  m.add_face({3, 0, 4, 7});
-  Mesh fanned;
-  fanned.vertices = m.vertices;
-  for (std::size_t f = 0; f < m.face_count(); ++f)
-    for (std::size_t k = 1; k + 1 < m.face_size(f); ++k)
-      fanned.add_face({m.face(f)[0], m.face(f)[k], m.face(f)[k + 1]});
+  const Mesh m = test::box_mesh(2.5, 1.25, 0.75);  // quads: written as fans
+  const Mesh fanned = test::triangulated(m);
   const MassProperties want = gltf_mass(fanned);
   for (MeshFormat format : {MeshFormat::gltf, MeshFormat::glb}) {
     const std::string bytes = write_mesh_bytes(m, format);

@@ -13,6 +13,7 @@
 #include "pgamesh/mesh/topology/topology.hpp"
 #include "support/nested_shells.hpp"
 #include "support/solids.hpp"
+#include "topology_test_meshes.hpp"
 
 namespace pgamesh {
 namespace {
@@ -21,6 +22,7 @@ using test::box_mesh;
 using test::centred_cube;
 using test::joined;
 using test::triangulated;
+using test::unshared;
 
 // A copy without the faces whose corners all satisfy `drop_if`.
 Mesh without_faces(const Mesh& m, const std::function<bool(Vec3d)>& drop_if) {
@@ -31,19 +33,6 @@ Mesh without_faces(const Mesh& m, const std::function<bool(Vec3d)>& drop_if) {
     for (std::size_t k = 0; k < m.face_size(f); ++k) all = all && drop_if(m.vertices[m.face(f)[k]]);
     if (all) continue;
     out.corners.insert(out.corners.end(), m.face(f), m.face(f) + m.face_size(f));
-    out.face_offsets.push_back(static_cast<std::uint32_t>(out.corners.size()));
-  }
-  return out;
-}
-
-// Every face with vertices of its own, as an STL stores it.
-Mesh unshared(const Mesh& m) {
-  Mesh out;
-  for (std::size_t f = 0; f < m.face_count(); ++f) {
-    for (std::size_t k = 0; k < m.face_size(f); ++k) {
-      out.corners.push_back(static_cast<std::uint32_t>(out.vertices.size()));
-      out.vertices.push_back(m.vertices[m.face(f)[k]]);
-    }
     out.face_offsets.push_back(static_cast<std::uint32_t>(out.corners.size()));
   }
   return out;

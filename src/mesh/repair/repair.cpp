@@ -133,8 +133,9 @@ std::size_t drop_unreferenced_vertices(Mesh& mesh) {
 Mesh without_crossing_caps(Mesh&& mesh, std::size_t first_cap_face,
                            const std::vector<std::size_t>& cap_hole_of,
                            std::vector<CappedHole>& holes) {
-  const SelfIntersections found =
-      find_self_intersections(mesh, std::numeric_limits<std::size_t>::max());
+  // The mesh is welded (step 1): the search takes its vertices as they are, without welding again.
+  const SelfIntersections found = find_self_intersections(
+      mesh.vertices, mesh.corners, mesh.face_offsets, std::numeric_limits<std::size_t>::max());
   const auto hole_of = [&](std::uint32_t f) {
     return f < first_cap_face ? holes.size() : cap_hole_of[f - first_cap_face];
   };
