@@ -23,7 +23,8 @@ namespace pgamesh::pga3 {
 namespace detail {
 /// The sandwich of M = q + ε c on points as a 3 × 4 matrix: rows r[i] = (R_i0, R_i1, R_i2, t_i),
 /// with R x = q x q* = (w² − v·v) x + 2 (v·x) v + 2 w (v × x) (quaternion.hpp rotate) and
-/// t = 2 (c_w q_v − q_w c_v + c_v × q_v) (motor.hpp apply to a point).
+/// t = 2 (c_w q_v − q_w c_v + c_v × q_v) (motor.hpp apply to a point): the action X ↦ M X M̃ of
+/// docs/conventions.md §7 with M = T R, q the rotor's quaternion as §7 maps it.
 template <class T>
 struct SandwichMatrix {
   T r[3][4];
