@@ -63,8 +63,8 @@ std::uint32_t FuelIndex::build(std::uint32_t first, std::uint32_t count,
     const Vec3d r = tank_->reference;
     for (std::uint32_t i = first; i < first + count; ++i) {
       const auto& t = tank_->triangles[order_[i]];
-      add_triangle(leaf.sums, tank_->vertices[t[0]] - r, tank_->vertices[t[1]] - r,
-                   tank_->vertices[t[2]] - r);
+      add_fan_triangle(leaf.sums, tank_->vertices[t[0]] - r, tank_->vertices[t[1]] - r,
+                       tank_->vertices[t[2]] - r, area_sign(*tank_, order_[i]));
     }
     return id;
   }
@@ -96,7 +96,7 @@ void FuelIndex::add_leaf(SliceSums& sums, const SliceContext& ctx, Side side,
       d[k] = pga3::join(p, pga3::point(x));
       v[k] = x - ctx.reference;
     }
-    add_kept_part(sums, ctx, side, v, d);
+    add_kept_part(sums, ctx, side, v, d, area_sign(*tank_, order_[i]));
   }
 }
 

@@ -53,14 +53,15 @@ FuelState fuel_naive(const Tank& tank, const FuelPlane& plane) {
   ctx.reference = ctx.frame.origin;  // o′ on the plane: the free surface adds nothing (eq. 4.13)
   ctx.cone_over_surface = false;
   SliceSums sums;
-  for (const auto& tri : tank.triangles) {
+  for (std::size_t t = 0; t < tank.triangles.size(); ++t) {
+    const auto& tri = tank.triangles[t];
     Vec3d v[3];
     double dt[3];
     for (int i = 0; i < 3; ++i) {
       v[i] = tank.vertices[tri[i]] - ctx.reference;
       dt[i] = d[tri[i]];
     }
-    add_kept_part(sums, ctx, Side::fuel, v, dt);
+    add_kept_part(sums, ctx, Side::fuel, v, dt, area_sign(tank, t));
   }
   return fuel_state(tank, plane, ctx, sums, Side::fuel);
 }

@@ -21,6 +21,7 @@ struct Crossing {
   std::array<Vec3d, 3> v;
   std::array<double, 3> height;
   std::uint32_t whole_from;
+  double area_sign;  // tank.hpp, area_sign
 };
 
 // Rank of the first sorted level ≥ h (`sorted` not empty): from that rank on, a vertex at height
@@ -80,8 +81,8 @@ std::vector<FuelState> fuel_sweep(const Tank& tank, Vec3d up_in, std::span<const
     std::array<std::uint32_t, 3> k{vertex_rank[tri[0]], vertex_rank[tri[1]], vertex_rank[tri[2]]};
     std::sort(k.begin(), k.end());
     ranks[t] = k;
-    add_triangle(mid_bucket[k[1]], tank.vertices[tri[0]] - r, tank.vertices[tri[1]] - r,
-                 tank.vertices[tri[2]] - r);
+    add_fan_triangle(mid_bucket[k[1]], tank.vertices[tri[0]] - r, tank.vertices[tri[1]] - r,
+                     tank.vertices[tri[2]] - r, area_sign(tank, t));
     ++enter_start[k[0] + 1];
     first_whole = std::min(first_whole, k[2]);
     last_whole = std::max(last_whole, k[2]);
@@ -121,7 +122,8 @@ std::vector<FuelState> fuel_sweep(const Tank& tank, Vec3d up_in, std::span<const
       crossing.push_back(
           {{tank.vertices[tri[0]] - r, tank.vertices[tri[1]] - r, tank.vertices[tri[2]] - r},
            {height[tri[0]], height[tri[1]], height[tri[2]]},
-           ranks[t][2]});
+           ranks[t][2],
+           area_sign(tank, t)});
     }
 
     SliceContext ctx;
@@ -142,7 +144,7 @@ std::vector<FuelState> fuel_sweep(const Tank& tank, Vec3d up_in, std::span<const
           v[c] = tank.vertices[tri[c]] - ctx.reference;
           d[c] = height[tri[c]] - level;
         }
-        add_kept_part(sums, ctx, Side::fuel, v, d);
+        add_kept_part(sums, ctx, Side::fuel, v, d, area_sign(tank, by_enter[i]));
       }
     } else if (k >= last_whole) {
       crossing.clear();
@@ -161,7 +163,8 @@ std::vector<FuelState> fuel_sweep(const Tank& tank, Vec3d up_in, std::span<const
         if (c.whole_from <= k) continue;
         const double d[3] = {c.height[0] - level, c.height[1] - level, c.height[2] - level};
         const CutTriangle cut = cut_triangle(c.v.data(), d);
-        add_triangle(cut.a_in_fuel ? one_in_pieces : two_in_pieces, cut.a, cut.ab, cut.ac);
+        add_fan_triangle(cut.a_in_fuel ? one_in_pieces : two_in_pieces, cut.a, cut.ab, cut.ac,
+                         c.area_sign);
         add_surface_segment(sums.surface, ctx.frame, origin, cut);
         crossing[kept++] = c;
       }

@@ -14,23 +14,23 @@ void subtract(BoundarySums& s, const BoundarySums& t) {
 }
 
 void add_kept_part(SliceSums& sums, const SliceContext& ctx, Side side, const Vec3d v[3],
-                   const double d[3]) {
+                   const double d[3], double area_sign) {
   bool kept[3];
   for (int i = 0; i < 3; ++i) kept[i] = side == Side::fuel ? d[i] <= 0 : d[i] > 0;
   const int count = kept[0] + kept[1] + kept[2];
   if (count == 0) return;
   if (count == 3) {
-    add_triangle(sums.wall, v[0], v[1], v[2]);
+    add_fan_triangle(sums.wall, v[0], v[1], v[2], area_sign);
     return;
   }
   const CutTriangle t = cut_triangle(v, d);
   if ((side == Side::fuel) == t.a_in_fuel) {
-    add_triangle(sums.wall, t.a, t.ab, t.ac);  // the small piece (a, ab, ac) is kept
+    add_fan_triangle(sums.wall, t.a, t.ab, t.ac, area_sign);  // the small piece is kept
   } else {
     // One vertex dropped: the whole triangle minus the small one (paper §4d).
-    add_triangle(sums.wall, v[0], v[1], v[2]);
+    add_fan_triangle(sums.wall, v[0], v[1], v[2], area_sign);
     BoundarySums small;
-    add_triangle(small, t.a, t.ab, t.ac);
+    add_fan_triangle(small, t.a, t.ab, t.ac, area_sign);
     subtract(sums.wall, small);
   }
   // Whichever side is kept, the surface sums are those of the fuel's free surface.

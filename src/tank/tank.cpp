@@ -10,6 +10,28 @@
 
 namespace pgamesh::tank {
 
+namespace {
+
+// Marks the fan triangles [first, end) of one polygon face that fold back against the face's
+// summed normal (fan_area_sign), with coordinates relative to the tank's reference point as the
+// mass properties take them.
+void mark_folded_fan(Tank& t, std::size_t first) {
+  auto normal = [&](const std::array<std::uint32_t, 3>& tri) {
+    return triangle_carrier(t.vertices[tri[0]] - t.reference, t.vertices[tri[1]] - t.reference,
+                            t.vertices[tri[2]] - t.reference)
+        .normal();
+  };
+  Vec3d face{};
+  for (std::size_t i = first; i < t.triangles.size(); ++i) face += normal(t.triangles[i]);
+  for (std::size_t i = first; i < t.triangles.size(); ++i) {
+    if (fan_area_sign(normal(t.triangles[i]), face) > 0) continue;
+    t.folded.resize(t.triangles.size(), 0);  // the faces before this one fold nowhere
+    t.folded[i] = 1;
+  }
+}
+
+}  // namespace
+
 Tank make_tank(const Mesh& mesh) {
   Tank t;
   if (mesh.vertices.empty() || mesh.face_count() == 0)
@@ -35,13 +57,18 @@ Tank make_tank(const Mesh& mesh) {
       if (c[i] >= n)
         throw std::invalid_argument("face " + std::to_string(f) +
                                     " has a vertex index out of range");
+    const std::size_t first = t.triangles.size();
     for (std::size_t i = 1; i + 1 < k; ++i) t.triangles.push_back({c[0], c[i], c[i + 1]});
+    if (k > 3) mark_folded_fan(t, first);
   }
+  if (!t.folded.empty()) t.folded.resize(t.triangles.size(), 0);
   // The whole tank's sums over the very triangles the slices cut, so that fuel + ullage = tank
-  // holds for the wall area too (a non-planar face's fan area is not its ½‖F‖, add_polygon).
-  for (const auto& tri : t.triangles)
-    add_triangle(t.total, t.vertices[tri[0]] - t.reference, t.vertices[tri[1]] - t.reference,
-                 t.vertices[tri[2]] - t.reference);
+  // holds for the wall area too.
+  for (std::size_t i = 0; i < t.triangles.size(); ++i) {
+    const auto& tri = t.triangles[i];
+    add_fan_triangle(t.total, t.vertices[tri[0]] - t.reference, t.vertices[tri[1]] - t.reference,
+                     t.vertices[tri[2]] - t.reference, area_sign(t, i));
+  }
   const BodyMoments m = body_moments(t.total);
   // Coordinates so large that the sums overflow (a tank of size around 1e77 and up: the norm of a
   // face's vector area squares its L² components) would give an infinite or undefined area or

@@ -106,3 +106,60 @@ TEST(BodyMoments, CarrierEqualsJoinOfPoints) {
   EXPECT_NEAR(f.e0, j.e0, 1e-14);
   EXPECT_NEAR(origin_join(f), dot(a, cross(b, c)), 1e-14);  // o ∨ F = det(a, b, c)
 }
+
+TEST(BodyMoments, BentQuadHasItsFanAreaAndIsReportedBent) {
+  // The unit square with corner 2 lifted by h: fan triangles (c0, c1, c2) and (c0, c2, c3) have
+  // normals (0, −h, 1) and (−h, 0, 1), so the fan's area is √(1 + h²); their sum N = (−h, −h, 2)
+  // puts corners 1 and 3 at height −h/‖N‖ and corners 0 and 2 at 0, a slab of half-width
+  // h / (2‖N‖); the face's size is ‖c2 − c0‖ = √(2 + h²).
+  for (double h : {0.5, 1e-3}) {
+    SCOPED_TRACE(h);
+    const Vec3d v[4] = {{0, 0, 0}, {1, 0, 0}, {1, 1, h}, {0, 1, 0}};
+    BoundarySums s;
+    add_polygon(s, v, 4);
+    const double fan = std::sqrt(1 + h * h);
+    EXPECT_NEAR(s.area2 / 2, fan, 4e-16 * fan);
+    // The fan's area, not the area of its projection onto the mean plane, ½‖N‖.
+    EXPECT_GT(s.area2 / 2 - std::sqrt(2 * h * h + 4) / 2, 0.1 * h * h);
+    const double deviation = h / (2 * std::sqrt(2 * h * h + 4));
+    EXPECT_EQ(s.planarity.nonplanar_faces, 1u);
+    EXPECT_NEAR(s.planarity.largest_deviation, deviation, 1e-15 * deviation);
+    EXPECT_NEAR(s.planarity.largest_relative, deviation / std::sqrt(2 + h * h), 1e-15 * deviation);
+  }
+}
+
+TEST(BodyMoments, NearlyFlatQuadIsNotReportedBent) {
+  // Lifted by 1e-8 of its size, the quad is within face_planarity_tolerance of flat.
+  const Vec3d v[4] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 1e-8}, {0, 1, 0}};
+  BoundarySums s;
+  add_polygon(s, v, 4);
+  EXPECT_EQ(s.planarity.nonplanar_faces, 0u);
+  EXPECT_NEAR(s.area2 / 2, 1, 1e-15);
+}
+
+TEST(BodyMoments, ConcavePolygonAreaIsExactAndPlanarityMerges) {
+  // An L-shaped hexagon (area 3) whose fan from its first corner folds back over the reflex
+  // corner: the folded triangle counts negatively, so the area is exactly 3 (every fan area is an
+  // integer here), where Σ ‖F_i‖ would give 4.
+  const Vec3d l[6] = {{2, 1, 0}, {1, 1, 0}, {1, 2, 0}, {0, 2, 0}, {0, 0, 0}, {2, 0, 0}};
+  BoundarySums s;
+  add_polygon(s, l, 6);
+  EXPECT_EQ(s.area2, 6);
+  EXPECT_EQ(s.volume6, 0);
+  EXPECT_EQ(s.planarity.nonplanar_faces, 0u);
+  // Sums of faces merge their planarity by count and maximum, in either order.
+  const Vec3d bent[4] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0.5}, {0, 1, 0}};
+  const Vec3d more[4] = {{0, 0, 0}, {2, 0, 0}, {2, 2, 0.1}, {0, 2, 0}};
+  BoundarySums a, b;
+  add_polygon(a, bent, 4);
+  add_polygon(b, more, 4);
+  BoundarySums ab = s, ba = s;
+  ab += a;
+  ab += b;
+  ba += b;
+  ba += a;
+  EXPECT_EQ(ab.planarity.nonplanar_faces, 2u);
+  EXPECT_EQ(ab.planarity.largest_relative, a.planarity.largest_relative);
+  EXPECT_EQ(ab.planarity.largest_deviation, ba.planarity.largest_deviation);
+  EXPECT_EQ(ab.planarity.largest_relative, ba.planarity.largest_relative);
+}

@@ -315,13 +315,29 @@ TEST(FuelClosedForms, ConcaveFacesGiveExactVolumesAndCentres) {
   const Tank t = make_tank(m);
   EXPECT_NEAR(t.volume, 3, 1e-14);
   EXPECT_NEAR(t.gap_area, 0, 1e-14);
+  // The folded fan triangle counts negatively in the area as in the volume: two caps of 3 and a
+  // rim of 8 × 1, as `pgamesh props` gives (not 2 × 4 + 8, the caps' unsigned fan areas).
+  EXPECT_NEAR(t.area, 14, 1e-14);
+  const FuelIndex index(t);
   for (const Vec3d up : {Vec3d{0, 0, 1}, Vec3d{0, 1, 0}}) {
     // Half the height along z: half the prism; along y: the rectangle [0,2]×[0,1] of the L.
-    const FuelState half = query(t, up, up.z ? 0.5 : 1.0);
+    const double level = up.z ? 0.5 : 1.0;
+    const FuelState half = query(t, up, level);
     EXPECT_NEAR(half.volume, up.z ? 1.5 : 2, 1e-14);
     EXPECT_NEAR(half.surface_area, up.z ? 3 : 1, 1e-14);
     const Vec3d com = up.z ? Vec3d{5.0 / 6, 5.0 / 6, 0.25} : Vec3d{1, 0.5, 0.5};
     EXPECT_NEAR(length(half.center_of_mass - com), 0, 1e-14);
+    // Wetted wall along z: the bottom L (3) and half the rim (8 × ½). Along y, below y = 1: the
+    // [0,2]×[0,1] parts of both caps (2 + 2), the walls y = 0 (2), x = 2 (1), x = 0 below y = 1
+    // (1), and the step y = 1, x ∈ [1,2], which lies in the plane and so is fuel's (1).
+    const double wetted = up.z ? 7 : 9;
+    EXPECT_NEAR(half.wetted_area, wetted, 1e-14);
+    // The hierarchy and the sorted sweep count the folded triangles alike.
+    EXPECT_NEAR(index.query(fuel_plane(up, level)).wetted_area, wetted, 1e-14);
+    const std::vector<double> levels{level, 2.0};
+    const std::vector<FuelState> swept = fuel_sweep(t, up, levels);
+    EXPECT_NEAR(swept[0].wetted_area, wetted, 1e-14);
+    EXPECT_NEAR(swept[1].wetted_area, 14, 1e-14);
   }
 }
 

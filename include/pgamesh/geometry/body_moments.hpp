@@ -19,14 +19,41 @@
 // §13).
 #pragma once
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
+#include <cstdint>
 
 #include "pgamesh/algebra/pga3.hpp"
 #include "pgamesh/core/vec3.hpp"
 #include "pgamesh/geometry/carrier.hpp"
 
 namespace pgamesh {
+
+// How far the polygon faces summed are from planar (docs/mass-properties.md, "Polygon faces"):
+// the faces whose corners leave their mean plane by more than face_planarity_tolerance of the
+// face's size, and the largest such deviation. Merged by count and maximum, so the same in any
+// order of addition.
+struct FacePlanarity {
+  std::uint64_t nonplanar_faces = 0;
+  double largest_deviation = 0;  // of a corner from its face's mean plane, in length units
+  double largest_relative = 0;   // that deviation / the size of its face
+
+  void merge(const FacePlanarity& o) {
+    nonplanar_faces += o.nonplanar_faces;
+    if (o.largest_relative > largest_relative ||
+        (o.largest_relative == largest_relative && o.largest_deviation > largest_deviation)) {
+      largest_relative = o.largest_relative;
+      largest_deviation = o.largest_deviation;
+    }
+  }
+};
+
+// A face is non-planar when a corner leaves its mean plane by more than this fraction of its size.
+// The area of a face bent by δ (relative) differs from its projection's by about δ², so below this
+// the choice of surface changes no printed digit; above it the warning says the faces are bent.
+inline constexpr double face_planarity_tolerance = 1e-6;
 
 // Raw sums, scaled as accumulated (×2, ×6, ×24, ×120): adding partial sums is reassociation only,
 // so sums from several threads combine with +=, in a fixed order for reproducible results.
@@ -38,6 +65,7 @@ struct BasicBoundarySums {
   T volume6{};                   // Σ o ∨ F
   Vec3<T> moment24{};            // Σ (o ∨ F)(a + b + c)
   std::array<T, 6> second120{};  // Σ (o ∨ F)(aaᵀ + bbᵀ + ccᵀ + ssᵀ): xx, yy, zz, xy, yz, zx
+  FacePlanarity planarity{};     // of the polygon faces (triangles are planar)
 
   BasicBoundarySums& operator+=(const BasicBoundarySums& o) {
     area2 += o.area2;
@@ -48,6 +76,7 @@ struct BasicBoundarySums {
     volume6 += o.volume6;
     moment24 += o.moment24;
     for (int i = 0; i < 6; ++i) second120[i] += o.second120[i];
+    planarity.merge(o.planarity);
     return *this;
   }
 };
@@ -111,14 +140,72 @@ pga3::Plane<T> add_triangle(BasicBoundarySums<T>& s, Vec3<T> a, Vec3<T> b, Vec3<
   return add_triangle(s, a, b, c, norm_f);
 }
 
-// Adds the polygon v[0], …, v[n−1] (n ≥ 3, coordinates relative to the reference point) without
+// The sign with which a fan triangle of a polygon face counts in the face's area
+// (docs/mass-properties.md, "Polygon faces"): −1 when its normal `triangle_normal` points against
+// the face's summed normal `face_normal` (the fan folds back over a concave corner), else +1.
+inline double fan_area_sign(Vec3d triangle_normal, Vec3d face_normal) {
+  return dot(triangle_normal, face_normal) < 0 ? -1.0 : 1.0;
+}
+
+// Adds the fan triangle (a, b, c) of a polygon face as add_triangle does, its area counted with
+// `area_sign` (fan_area_sign; +1 for a triangle face, which changes no bit).
+template <class T>
+pga3::Plane<T> add_fan_triangle(BasicBoundarySums<T>& s, Vec3<T> a, Vec3<T> b, Vec3<T> c,
+                                T area_sign) {
+  const pga3::Plane<T> f = add_tetrahedron(s, a, b, c);
+  add_face_carrier(s, f, area_sign * pga3::norm(f));
+  return f;
+}
+
+// Adds the surface parts of a polygon face of k ≥ 4 corners corner(0), …, corner(k − 1)
+// (relative to the reference point) whose fan carriers (corner(0), corner(i), corner(i + 1)) sum
+// to f: f itself to Σ F, and to the area the signed fan area Σ_i s_i ‖F_i‖, s_i = fan_area_sign of
+// fan triangle i against f. For a planar polygon, concave or not, that is ½‖f‖ (the folded
+// triangles take back what the others overcount, paper §4c); for a non-planar one it is the area
+// of the fan whose tetrahedra give its volume, which is also what the tank's slices add up
+// (docs/mass-properties.md, "Polygon faces"). A face bent beyond face_planarity_tolerance is
+// counted in s.planarity with the half-width of the slab its corners span along f's normal (their
+// largest distance from the slab's middle plane), relative to the face's size (the largest
+// distance from corner 0 to another corner).
+template <class CornerAt>
+void add_polygon_surface(BoundarySums& s, std::size_t k, const CornerAt& corner,
+                         const pga3::Plane<double>& f) {
+  const Vec3d n = f.normal();
+  const Vec3d a = corner(0);
+  Vec3d b = corner(1);
+  double area2 = 0, low = 0, high = 0, size2 = 0;
+  auto span_corner = [&](Vec3d c) {
+    const double h = dot(n, c - a);
+    low = std::min(low, h);
+    high = std::max(high, h);
+    size2 = std::max(size2, dot(c - a, c - a));
+  };
+  span_corner(b);
+  for (std::size_t i = 2; i < k; ++i) {
+    const Vec3d c = corner(i);
+    const pga3::Plane<double> t = triangle_carrier(a, b, c);
+    area2 += fan_area_sign(t.normal(), n) * pga3::norm(t);
+    span_corner(c);
+    b = c;
+  }
+  add_face_carrier(s, f, area2);
+  const double norm_n = pga3::norm(f), size = std::sqrt(size2);
+  if (!(norm_n > 0) || !(size > 0)) return;
+  const double deviation = (high - low) / (2 * norm_n);
+  if (!(deviation > face_planarity_tolerance * size)) return;
+  FacePlanarity bent;
+  bent.nonplanar_faces = 1;
+  bent.largest_deviation = deviation;
+  bent.largest_relative = deviation / size;
+  s.planarity.merge(bent);
+}
+
+// Adds the polygon v[0], …, v[n−1] (n ≥ 4, coordinates relative to the reference point) without
 // triangulating it: its carrier is the sum of its boundary-edge carriers joined with v[0]
 // (paper §4c), F = Σ_i (v_i ∨ v_{i+1}) ∨ v_0 = Σ_i v_0 ∨ v_i ∨ v_{i+1}, so the solid parts are
-// those of the fan of signed tetrahedra (o, v_0, v_i, v_{i+1}) and the area is ½‖F‖. For a planar
-// polygon, concave or not, every part is exact (the fan's negative triangles cancel what the
-// positive ones overcount). For a non-planar polygon the solid parts are those of the fan about
-// v_0 and the area is the norm of its vector area, i.e. the area of its projection onto its mean
-// plane (docs/mass-properties.md).
+// those of the fan of signed tetrahedra (o, v_0, v_i, v_{i+1}), exact for a planar polygon,
+// concave or not (the fan's negative tetrahedra cancel what the positive ones overcount); the
+// surface parts are add_polygon_surface's.
 inline void add_polygon(BoundarySums& s, const Vec3d* v, std::size_t n) {
   pga3::Plane<double> f{};
   for (std::size_t i = 1; i + 1 < n; ++i) {
@@ -128,7 +215,8 @@ inline void add_polygon(BoundarySums& s, const Vec3d* v, std::size_t n) {
     f.e2 += t.e2;
     f.e3 += t.e3;
   }
-  add_face_carrier(s, f);
+  const auto corner = [v](std::size_t i) { return v[i]; };
+  add_polygon_surface(s, n, corner, f);
 }
 
 // The moments of the solid at density 1, about the reference point.

@@ -1,8 +1,8 @@
 // A polygonal face as a boundary element: the carrier of a face with k corners is the sum of the
 // carriers of the fan (c0, c_i, c_{i+1}); its normal part is Σ c_i × c_{i+1}, which depends on the
-// rim only, so the area ½‖Σ F‖ is the polygon's area for any planar polygon, concave ones included
-// (paper §4c, docs/conventions.md §6). The volume terms of a non-planar polygon are those of its
-// fan from the first corner.
+// rim only (paper §4c, docs/conventions.md §6). Its area is the signed fan area of
+// add_polygon_surface: the polygon's area for any planar polygon, concave ones included, and the
+// fan's area for a non-planar one, whose volume terms are those of the same fan.
 #pragma once
 
 #include <cstddef>
@@ -12,20 +12,30 @@
 namespace pgamesh {
 
 // The sums of one face with `k` corners, `corner(i)` giving corner i relative to the reference
-// point; area2 is ‖Σ F‖ of the fan, not Σ ‖F‖ (which overcounts a concave polygon). Faces with
-// fewer than three corners add nothing.
+// point: a triangle by add_triangle, a larger polygon by its fan's tetrahedra and
+// add_polygon_surface (its signed fan area, not Σ ‖F‖, which overcounts a concave polygon). Faces
+// with fewer than three corners add nothing.
 template <class CornerAt>
 BoundarySums polygon_face_sums(std::size_t k, CornerAt corner) {
   BoundarySums p;
   if (k < 3) return p;
+  if (k == 3) {
+    add_triangle(p, corner(0), corner(1), corner(2));
+    return p;
+  }
   const Vec3d a = corner(0);
   Vec3d b = corner(1);
+  pga3::Plane<double> f{};
   for (std::size_t i = 2; i < k; ++i) {
     const Vec3d c = corner(i);
-    add_triangle(p, a, b, c);
+    const pga3::Plane<double> t = add_tetrahedron(p, a, b, c);
+    f.e0 += t.e0;
+    f.e1 += t.e1;
+    f.e2 += t.e2;
+    f.e3 += t.e3;
     b = c;
   }
-  if (k > 3) p.area2 = pga3::norm(p.carrier_sum);
+  add_polygon_surface(p, k, corner, f);
   return p;
 }
 

@@ -76,8 +76,9 @@ inline void add_surface_segment(FreeSurfaceSums& s, const SurfaceFrame& frame, V
 }
 
 /// Adds the kept part of the triangle (v[0], v[1], v[2]) (coordinates relative to the context's
-/// reference, CCW seen from outside) with heights d[i] = p ∨ v_i above the plane.
+/// reference, CCW seen from outside) with heights d[i] = p ∨ v_i above the plane, its area counted
+/// with `area_sign` (tank.hpp, area_sign: −1 for a folded fan triangle).
 void add_kept_part(SliceSums& sums, const SliceContext& ctx, Side side, const Vec3d v[3],
-                   const double d[3]);
+                   const double d[3], double area_sign);
 
 }  // namespace pgamesh::tank

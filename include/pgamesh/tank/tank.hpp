@@ -20,6 +20,10 @@ namespace pgamesh::tank {
 struct Tank {
   std::vector<Vec3d> vertices;
   std::vector<std::array<std::uint32_t, 3>> triangles;
+  // Per triangle, 1 where a polygon's fan folds back over a concave corner (fan_area_sign = −1):
+  // its area counts negatively, so the wetted area of every slice is the faces' signed fan area
+  // (docs/mass-properties.md, "Polygon faces"). Empty when no triangle folds.
+  std::vector<std::uint8_t> folded;
   Vec3d lower{}, upper{};  // bounding box of the vertices
   Vec3d reference{};       // centre of the bounding box: sums are accumulated about it
   BoundarySums total;      // the whole tank about `reference`
@@ -28,11 +32,15 @@ struct Tank {
   double gap_area = 0;     // ½‖Σ F‖: 0 for a closed mesh (Cor. 4.1)
 };
 
+/// The sign with which triangle t's area counts: −1 for a folded fan triangle, else +1.
+inline double area_sign(const Tank& tank, std::size_t t) {
+  return !tank.folded.empty() && tank.folded[t] ? -1.0 : 1.0;
+}
+
 /// Prepares a mesh: polygons with n > 3 corners are fanned from their first corner, and the tank
 /// is that triangle surface throughout (its total, every slice): volumes and moments are exact
-/// for planar polygons, concave ones included (their carrier is the sum of the fan's carriers);
-/// areas are those of the fan triangles, which for a concave face counts the fan's inverted
-/// triangles positively, and for a non-planar face differs from add_polygon's ½‖F‖. Throws
+/// for planar polygons, concave ones included (their carrier is the sum of the fan's carriers),
+/// and areas are signed fan areas (area_sign), the face areas of `pgamesh props`. Throws
 /// std::invalid_argument for an empty mesh, an index out of range, a non-finite coordinate or
 /// coordinates so large that the tank's area or volume overflows a double.
 Tank make_tank(const Mesh& mesh);

@@ -58,6 +58,7 @@ MassProperties mass_properties_from_sums(const BoundarySums& sums, Vec3d referen
     throw std::invalid_argument("mass must be a positive finite number");
   const BodyMoments m = body_moments(sums);
   MassProperties p;
+  if (auto w = nonplanar_faces_warning(sums.planarity)) p.warnings.push_back(*w);
   p.reference_point = reference;
   p.area = m.area;
   p.volume = m.volume;
@@ -95,6 +96,19 @@ MassProperties mass_properties_from_sums(const BoundarySums& sums, Vec3d referen
   p.principal = principal_frame(p.inertia_com, options.degeneracy_tolerance);
   p.principal_motor = pga3::translator(p.center_of_mass) * p.principal.rotor;
   return p;
+}
+
+std::optional<std::string> nonplanar_faces_warning(const FacePlanarity& planarity) {
+  if (planarity.nonplanar_faces == 0) return std::nullopt;
+  char buf[400];
+  std::snprintf(buf, sizeof buf,
+                "%llu polygon face%s not planar: a corner lies up to %.3g from its face's mean "
+                "plane (%.2g of that face's size); the area of a bent face is that of its fan from "
+                "its first corner, the surface its volume is measured under",
+                static_cast<unsigned long long>(planarity.nonplanar_faces),
+                planarity.nonplanar_faces == 1 ? " is" : "s are", planarity.largest_deviation,
+                planarity.largest_relative);
+  return std::string(buf);
 }
 
 std::optional<std::string> float32_precision_warning(const Box3& box) {

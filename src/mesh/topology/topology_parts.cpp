@@ -123,16 +123,24 @@ template <class CornerAt>
 BoundarySums surface_sums(std::uint32_t k, const CornerAt& corner, Vec3d ref) {
   BoundarySums p;
   if (k < 3) return p;
-  const Vec3d a = corner(0) - ref;
-  Vec3d b = corner(1) - ref;
+  auto relative = [&](std::size_t i) { return corner(static_cast<std::uint32_t>(i)) - ref; };
+  const Vec3d a = relative(0);
+  Vec3d b = relative(1);
+  pga3::Plane<double> f{};
   for (std::uint32_t i = 2; i < k; ++i) {
-    const Vec3d c = corner(i) - ref;
+    const Vec3d c = relative(i);
     const pga3::Plane<double> carrier = triangle_carrier(a, b, c);
     p.volume6 += origin_join(carrier);  // as add_tetrahedron
-    add_face_carrier(p, carrier);
+    f.e0 += carrier.e0;
+    f.e1 += carrier.e1;
+    f.e2 += carrier.e2;
+    f.e3 += carrier.e3;
     b = c;
   }
-  if (k > 3) p.area2 = pga3::norm(p.carrier_sum);
+  if (k == 3)
+    add_face_carrier(p, f);
+  else
+    add_polygon_surface(p, k, relative, f);
   return p;
 }
 

@@ -103,6 +103,11 @@ MassProperties mass_properties(const Mesh& mesh, const MassOptions& options = {}
 // accumulation does. nullopt otherwise.
 std::optional<std::string> float32_precision_warning(const Box3& box);
 
+// When polygon faces were bent beyond face_planarity_tolerance (body_moments.hpp), a warning
+// giving their number and the largest deviation of a corner from its face's mean plane, absolute
+// and relative to that face's size. nullopt otherwise. mass_properties_from_sums adds it.
+std::optional<std::string> nonplanar_faces_warning(const FacePlanarity& planarity);
+
 // The products of inertia of an inertia tensor.
 ProductsOfInertia products_of_inertia(const Mat3& inertia);
 
