@@ -2,8 +2,9 @@
 // and the two consumers of the one ASCII STL grammar (io/stl_ascii_grammar.hpp) against each
 // other on every input: the summing consumer of `props --no-topology` must refuse exactly what the
 // Mesh reader refuses, with the same message and position, and on everything the reader accepts
-// give mass_properties() of the read mesh bit for bit, with the same counts and warnings — in one
-// piece, and cut into pieces of a few dozen bytes parsed on two threads.
+// give the read mesh's counts and warnings, its figures about the same reference point bit for bit
+// when the text is one piece, and the same bits on one thread and on two — in one piece, and cut
+// into pieces of a few dozen bytes.
 #include <optional>
 #include <string>
 
@@ -38,6 +39,15 @@ bool same_mass(const MassProperties& a, const MassProperties& b) {
   return ok;
 }
 
+// The figures of `mesh` accumulated about the reference point of `summed`, as mass_properties()
+// accumulates them about its own.
+MassProperties mass_about(const Mesh& mesh, const MassProperties& summed,
+                          const MeshSource& source) {
+  return mesh_mass_properties_from_sums(mesh_boundary_sums(mesh, summed.reference_point, 1),
+                                        summed.reference_point, mesh.vertices, mesh.face_count(),
+                                        summed.triangles, {}, source.single_precision);
+}
+
 bool same_error(const InputError& a, const InputError& b) {
   return std::string(a.what()) == b.what() && a.where().has_line == b.where().has_line &&
          a.where().line == b.where().line && a.where().column == b.where().column &&
@@ -64,18 +74,32 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     read_mass = mass_properties(mesh, {}, &read_source);
   }
   for (const std::size_t piece_bytes : {detail::stl_ascii_piece_bytes, std::size_t{48}}) {
-    MassOptions options;
-    options.threads = 2;
-    MeshSource source;
-    try {
-      const MassProperties summed =
-          ascii_stl_mass_properties(bytes, "fuzz", source, options, false, piece_bytes);
-      fuzz::require(
-          read_mass.has_value());  // the summing consumer accepted what the reader rejects
-      fuzz::require(same_mass(summed, *read_mass));
-      fuzz::require(source.format == read_source.format && source.warnings == read_source.warnings);
-    } catch (const InputError& e) {
-      fuzz::require(read_error.has_value() && same_error(e, *read_error));
+    std::optional<MassProperties> one_thread;
+    for (const unsigned threads : {1u, 2u}) {
+      MassOptions options;
+      options.threads = threads;
+      MeshSource source;
+      try {
+        const MassProperties summed =
+            ascii_stl_mass_properties(bytes, "fuzz", source, options, false, piece_bytes);
+        fuzz::require(
+            read_mass.has_value());  // the summing consumer accepted what the reader rejects
+        fuzz::require(summed.faces == read_mass->faces &&
+                      summed.triangles == read_mass->triangles &&
+                      summed.vertices == read_mass->vertices);
+        fuzz::require(source.format == read_source.format &&
+                      source.warnings == read_source.warnings);
+        // Text of one piece: the mesh's sums about the same point, bit for bit.
+        if (size <= piece_bytes)
+          fuzz::require(same_mass(summed, mass_about(mesh, summed, read_source)));
+        // Any thread count: the same bits.
+        if (one_thread)
+          fuzz::require(same_mass(summed, *one_thread));
+        else
+          one_thread = summed;
+      } catch (const InputError& e) {
+        fuzz::require(read_error.has_value() && same_error(e, *read_error));
+      }
     }
   }
   return 0;

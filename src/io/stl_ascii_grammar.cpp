@@ -1,5 +1,7 @@
 #include "io/stl_ascii_grammar.hpp"
 
+#include <algorithm>
+
 namespace pgamesh::detail {
 
 namespace {
@@ -44,6 +46,40 @@ void add_stl_ascii_warnings(const StlAsciiState& s, const char* begin, const std
     warnings.push_back(name + ":" + std::to_string(pos.line) + ": " + std::to_string(s.polygons) +
                        " facet(s) with more than 3 vertices kept as polygons");
   }
+}
+
+Box3 stl_ascii_sampled_box(std::span<const char> bytes, const std::string& name, bool release_pages,
+                           std::size_t samples) {
+  // A facet is about 250 bytes: a vertex line is found within a few of them.
+  constexpr std::size_t scan_bytes = 4096;
+  const char* first = bytes.data();
+  const char* end = first + bytes.size();
+  Box3 box;
+  const char* scan = first;  // the samples move forward only
+  PageRelease release(first, release_pages);
+  for (std::size_t k = 0; k < samples && scan != end; ++k) {
+    release.passed(scan);
+    const char* target = first + bytes.size() / samples * k;
+    const char* line = k == 0 ? first : after_line(std::max(target, scan), end);
+    const char* limit =
+        end - line > static_cast<std::ptrdiff_t>(scan_bytes) ? line + scan_bytes : end;
+    for (; line < limit; line = after_line(line, end)) {
+      TextCursor c({line, end}, name);
+      c.skip_blanks();
+      if (!keyword(c, "vertex")) continue;
+      try {
+        Vec3d v;
+        v.x = coordinate(c, "x coordinate");
+        v.y = coordinate(c, "y coordinate");
+        v.z = coordinate(c, "z coordinate");
+        if (is_finite(v)) box.add(v);
+      } catch (const InputError&) {  // not a vertex the grammar would read: not a sample
+      }
+      break;
+    }
+    scan = line;
+  }
+  return box;
 }
 
 std::vector<const char*> stl_ascii_piece_starts(std::span<const char> bytes,

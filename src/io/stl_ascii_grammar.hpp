@@ -40,6 +40,7 @@
 #include "geometry/chunked_sums.hpp"
 #include "io/readers.hpp"
 #include "io/text_cursor.hpp"
+#include "pgamesh/core/bounding_box.hpp"
 #include "pgamesh/core/vec3.hpp"
 
 namespace pgamesh::detail {
@@ -67,6 +68,19 @@ void parse_stl_ascii_header(TextCursor& c);
 // 'endsolid', facets kept as polygons (at the line of the first). `begin` is the text's start.
 void add_stl_ascii_warnings(const StlAsciiState& s, const char* begin, const std::string& name,
                             std::vector<std::string>& warnings);
+
+// Vertex lines sampled to place the reference point of a streamed sum (docs/conventions.md §13):
+// the box of at most this many, evenly spaced through the text, as the binary STL samples records.
+inline constexpr std::size_t stl_ascii_reference_samples = 4096;
+
+// The bounding box of the finite vertices of up to `samples` vertex lines evenly spaced through
+// the text: from each k-th fraction of it, the first line (within a few KiB) whose first word is
+// 'vertex' and that three numbers follow. It depends on the bytes only and reads no more than
+// samples × 4 KiB of them; lines that do not read as a vertex are passed over, since the grammar,
+// not the sample, judges the text. With `release_pages`, the pages the samples pass are given back
+// as they go.
+Box3 stl_ascii_sampled_box(std::span<const char> bytes, const std::string& name, bool release_pages,
+                           std::size_t samples = stl_ascii_reference_samples);
 
 // Piece boundaries for parse_ascii_stl_pieces: [starts[k], starts[k + 1]) is piece k; piece 0
 // starts at the text's first byte, every later one at a 'facet' line at or after the k-th

@@ -157,8 +157,8 @@ TEST(ReadReleasePages, StreamedStlPassesReleaseAndSumTheSame) {
   const Mesh tri = test::triangulated(test::uv_sphere(1.5, 100, 150));
   const std::string ascii = write_mesh_bytes(tri, MeshFormat::stl_ascii);
   // The summing consumer of ASCII STL releases each piece once parsed: the same figures and
-  // source as from memory and as the mesh read (a polygon facet at the end), and the same error
-  // (after released pages) as the reader's.
+  // source as from memory, the mesh read's (a polygon facet at the end) up to rounding, and the
+  // same error (after released pages) as the reader's.
   const std::size_t end = ascii.rfind("endsolid");
   const std::string quad = ascii.substr(0, end) +
                            "facet normal 0 0 1\nouter loop\nvertex 0 0 5\nvertex 1 0 5\n"
@@ -176,7 +176,17 @@ TEST(ReadReleasePages, StreamedStlPassesReleaseAndSumTheSame) {
     expect_same_source(released_source, kept_source);
     const Mesh m =
         detail::read_mesh_bytes(mapped.bytes(), "f", &read_source, MeshFormat::unknown, true);
-    expect_same_mass(released, mass_properties(m, {}, &read_source));
+    // The mesh read up to the last bits, about the same point (the quad leaves the surface open,
+    // whose volume depends on it): the sums run about a sampled reference point, piece by piece
+    // (stl_ascii_sums.hpp).
+    const MassProperties read = mesh_mass_properties_from_sums(
+        mesh_boundary_sums(m, released.reference_point), released.reference_point, m.vertices,
+        m.face_count(), released.triangles, {}, false);
+    EXPECT_NEAR(released.volume, read.volume, 1e-13 * read.volume);
+    EXPECT_NEAR(released.area, read.area, 1e-13 * read.area);
+    EXPECT_EQ(released.vertices, read.vertices);
+    EXPECT_EQ(released.faces, read.faces);
+    EXPECT_EQ(released.warnings, read.warnings);
     expect_same_source(released_source, read_source);
     EXPECT_EQ(released.faces, tri.face_count() + (text == quad ? 1 : 0));
     EXPECT_EQ(std::memcmp(mapped.bytes().data(), text.data(), text.size()), 0);

@@ -1,11 +1,13 @@
 // The summing consumer of the ASCII STL grammar (`props --no-topology`) against the Mesh it reads:
 // for every text, on any thread count and any cut into pieces, ascii_stl_mass_properties() is
-// mass_properties() of read_mesh_bytes() bit for bit, with the same source fields — or both throw
-// the same InputError (message and position). The cases cover the repairs (polygons, a missing
-// endsolid, several solids, letter case, CRLF, a byte order mark), the errors, and troubles in a
-// later piece of a large file.
+// mass_properties() of read_mesh_bytes() about the same reference point up to rounding (bit for bit
+// for a text of one piece whose sample meets every vertex line), the same bits on any thread count,
+// with the same counts and source fields — or both throw the same InputError (message and
+// position). The cases cover the repairs (polygons, a missing endsolid, several solids, letter
+// case, CRLF, a byte order mark), the errors, and troubles in a later piece of a large file.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <functional>
 #include <optional>
 #include <string>
@@ -13,6 +15,7 @@
 
 #include "mesh/mass/stl_ascii_sums.hpp"
 #include "pgamesh/core/input_error.hpp"
+#include "pgamesh/geometry/reference_point.hpp"
 #include "pgamesh/io/read_mesh.hpp"
 #include "pgamesh/io/write_mesh.hpp"
 #include "pgamesh/mesh/mass/mass_properties.hpp"
@@ -128,21 +131,56 @@ const Case stl_ascii_cases[] = {
 
 class StlAsciiSums : public ::testing::TestWithParam<Case> {};
 
-TEST_P(StlAsciiSums, EqualMassPropertiesOfTheReadMeshBitForBit) {
+// The figures of `mesh` accumulated about `reference`, as mass_properties() accumulates them about
+// its own reference point.
+MassProperties mass_about(const Mesh& mesh, Vec3d reference, const MeshSource& source) {
+  std::uint64_t triangles = 0;
+  for (std::size_t f = 0; f < mesh.face_count(); ++f) triangles += mesh.face_size(f) - 2;
+  return mesh_mass_properties_from_sums(mesh_boundary_sums(mesh, reference, 1), reference,
+                                        mesh.vertices, mesh.face_count(), triangles, {},
+                                        source.single_precision);
+}
+
+// a and b equal up to the rounding of sums of many terms: relative to each quantity's scale.
+void expect_near_mass(const MassProperties& a, const MassProperties& b) {
+  EXPECT_EQ(a.faces, b.faces);
+  EXPECT_EQ(a.triangles, b.triangles);
+  EXPECT_EQ(a.vertices, b.vertices);
+  EXPECT_EQ(a.warnings, b.warnings);
+  const double tol = 1e-12;
+  EXPECT_NEAR(a.area, b.area, tol * std::abs(b.area));
+  EXPECT_NEAR(a.volume, b.volume, tol * std::abs(b.volume));
+  EXPECT_NEAR(a.gap_area, b.gap_area, tol * (std::abs(b.area) + 1e-300));
+  const double size = std::cbrt(std::abs(b.volume)) + 1e-300;
+  if (std::isfinite(b.center_of_mass.x)) {
+    EXPECT_NEAR(length(a.center_of_mass - b.center_of_mass), 0,
+                tol * (size + length(b.center_of_mass)));
+    double scale = 0;
+    for (const auto& row : b.inertia_com)
+      for (double v : row) scale = std::max(scale, std::abs(v));
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j)
+        EXPECT_NEAR(a.inertia_com[i][j], b.inertia_com[i][j], tol * scale);
+  } else {
+    EXPECT_FALSE(std::isfinite(a.center_of_mass.x));
+  }
+}
+
+TEST_P(StlAsciiSums, EqualMassPropertiesOfTheReadMesh) {
   const std::string text = GetParam().text();
   const std::span<const char> bytes{text.data(), text.size()};
   MeshSource read_source;
-  std::optional<MassProperties> read_mass;
+  std::optional<Mesh> read;
   std::optional<InputError> read_error;
   try {
-    const Mesh m = read_mesh_bytes(bytes, "mem.stl", &read_source, MeshFormat::stl_ascii);
+    read = read_mesh_bytes(bytes, "mem.stl", &read_source, MeshFormat::stl_ascii);
     EXPECT_EQ(read_source.format, MeshFormat::stl_ascii);
-    read_mass = mass_properties(m, {}, &read_source);
   } catch (const InputError& e) {
     read_error = e;
   }
   // The default pieces, and pieces of a few facets (every file then has several).
-  for (const std::size_t piece_bytes : {detail::stl_ascii_piece_bytes, std::size_t{300}})
+  for (const std::size_t piece_bytes : {detail::stl_ascii_piece_bytes, std::size_t{300}}) {
+    std::optional<MassProperties> first;  // on one thread
     for (const unsigned threads : {1u, 2u, 5u}) {
       SCOPED_TRACE("piece bytes " + std::to_string(piece_bytes) + ", threads " +
                    std::to_string(threads));
@@ -152,10 +190,17 @@ TEST_P(StlAsciiSums, EqualMassPropertiesOfTheReadMeshBitForBit) {
       try {
         const MassProperties summed =
             ascii_stl_mass_properties(bytes, "mem.stl", source, options, false, piece_bytes);
-        ASSERT_TRUE(read_mass) << "the reader rejects it: " << read_error->what();
-        test::expect_same_mass(summed, *read_mass);
+        ASSERT_TRUE(read) << "the reader rejects it: " << read_error->what();
         EXPECT_EQ(source.format, read_source.format);
         EXPECT_EQ(source.warnings, read_source.warnings);
+        expect_near_mass(summed, mass_about(*read, summed.reference_point, read_source));
+        if (first)
+          test::expect_same_mass(summed, *first);
+        else
+          first = summed;
+        // One piece, and a sample that met every vertex: the mesh's own figures, bit for bit.
+        if (text.size() <= piece_bytes && summed.reference_point == reference_point(*read))
+          test::expect_same_mass(summed, mass_properties(*read, {}, &read_source));
       } catch (const InputError& e) {
         ASSERT_TRUE(read_error) << "only the summing consumer rejects it: " << e.what();
         EXPECT_STREQ(e.what(), read_error->what());
@@ -166,6 +211,22 @@ TEST_P(StlAsciiSums, EqualMassPropertiesOfTheReadMeshBitForBit) {
         EXPECT_EQ(e.where().byte_offset, read_error->where().byte_offset);
       }
     }
+  }
+}
+
+// The sampled reference point lies in the box of the mesh and near its centre: for a sphere far
+// from the origin, within a hundredth of its radius of the centre (the samples reach every band).
+TEST(StlAsciiSums, SampledReferenceIsNearTheCentre) {
+  const Vec3d centre{1e6, -1e6, 1e6};
+  const std::string text =
+      ascii_stl(test::transformed(uv_sphere(1.25, 40, 80), [&](Vec3d p) { return p + centre; }));
+  MeshSource source;
+  const MassProperties p = ascii_stl_mass_properties({text.data(), text.size()}, "mem.stl", source);
+  EXPECT_LT(length(p.reference_point - centre), 0.0125);
+  // A vertex line that is not one (a name holding the word) is no sample.
+  const std::string named = "solid vertex 1e300 0 0\n" + tetra_facets + "endsolid\n";
+  const Box3 box = detail::stl_ascii_sampled_box({named.data(), named.size()}, "mem.stl", false);
+  EXPECT_EQ(box.max_abs(), 1);
 }
 
 INSTANTIATE_TEST_SUITE_P(Texts, StlAsciiSums, ::testing::ValuesIn(stl_ascii_cases),
