@@ -223,31 +223,40 @@ TEST(Calc, QuadricElementsAndValuesMatchGolden) {
         {"ei5", "einf5"},
         {"ei6", "einf6"}}},
   };
-  int cases = 0;
-  for (const auto& c : file["cases"]) {
-    const json& in = c["input"];
-    const json& ex = c["expected"];
-    const auto t = pgamesh::test::tolerance_of(file, c);
-    std::string q = "quadric(";
-    for (std::size_t k = 0; k < 10; ++k) {
-      if (k) q += ",";
-      q += pgamesh::format_number(in["coefficients"][k].get<double>());
+  // One calc run per model, every case in it: the quadric of case i is Q<i>, printed, then its
+  // value at each of the case's points.
+  const json& cases = file["cases"];
+  ASSERT_GE(cases.size(), 20u);
+  for (const auto& m : models) {
+    std::string script;
+    std::size_t printed = 0;
+    for (std::size_t i = 0; i < cases.size(); ++i) {
+      const json& in = cases[i]["input"];
+      const std::string name = "Q" + std::to_string(i);
+      script += "let " + name + " = quadric(";
+      for (std::size_t k = 0; k < 10; ++k) {
+        if (k) script += ",";
+        script += pgamesh::format_number(in["coefficients"][k].get<double>());
+      }
+      script += ")\n" + name + "\n";
+      for (const auto& p : in["eval_points"])
+        script += "value(" + name + ", " + point_expr(p) + ")\n";
+      printed += 1 + in["eval_points"].size();
     }
-    q += ")";
-    for (const auto& m : models) {
-      std::string script = "let Q = " + q + "\nQ\n";
-      for (const auto& p : in["eval_points"]) script += "value(Q, " + point_expr(p) + ")\n";
-      const auto v = json_values(m.algebra, script);
-      ASSERT_EQ(v.size(), 1 + in["eval_points"].size()) << c["id"] << " " << m.algebra;
-      EXPECT_TRUE(blades_match(v[0], ex[m.key], t, m.rename)) << c["id"] << " " << m.algebra;
+    const auto v = json_values(m.algebra, script);
+    ASSERT_EQ(v.size(), printed) << m.algebra;
+    std::size_t next = 0;
+    for (const auto& c : cases) {
+      const json& ex = c["expected"];
+      const auto t = pgamesh::test::tolerance_of(file, c);
+      EXPECT_TRUE(blades_match(v[next++], ex[m.key], t, m.rename)) << c["id"] << " " << m.algebra;
       std::vector<double> values;
-      for (std::size_t k = 1; k < v.size(); ++k) values.push_back(coeff(v[k], "1"));
+      for (std::size_t k = 0; k < c["input"]["eval_points"].size(); ++k)
+        values.push_back(coeff(v[next++], "1"));
       EXPECT_TRUE(pgamesh::test::near_group(values, pgamesh::test::flatten(ex["values"]), t))
           << c["id"] << " " << m.algebra;
     }
-    ++cases;
   }
-  EXPECT_GE(cases, 20);
 }
 
 TEST(Calc, QuadricFunctionsInEveryModel) {
