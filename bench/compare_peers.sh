@@ -11,6 +11,9 @@
 #   BASELINE=/path/to/older/pgamesh   (another build of pgamesh, timed beside this one in the same
 #                                      rounds: the rows "baseline …"; compare them with the rows of
 #                                      this build — "vs pgamesh" is relative to this build's props)
+#   PROPS_ARGS="--no-self-intersections"   (options of this build's `pgamesh props` with topology,
+#                                      e.g. to leave out the search for intersecting faces, which
+#                                      an older build or a peer does not make)
 #
 # Peers (scripts/setup.sh bench installs them; missing ones are skipped): admesh (STL), a CGAL
 # program (bench/peers/cgal_props.cpp: PMP::volume/area/centroid), VTK vtkMassProperties
@@ -82,7 +85,8 @@ for n in "${sizes[@]}"; do
     bytes=$(stat -c %s "$file")
     cat "$file" > /dev/null  # warm the page cache
     tools=("cat" "pgamesh props --no-topology" "pgamesh props")
-    cmds=("cat $file" "$pgamesh props $file --no-topology --json" "$pgamesh props $file --json")
+    cmds=("cat $file" "$pgamesh props $file --no-topology --json"
+          "$pgamesh props $file --json ${PROPS_ARGS:-}")
     if [ -n "${BASELINE:-}" ]; then
       tools+=("baseline props --no-topology" "baseline props")
       cmds+=("$BASELINE props $file --no-topology --json" "$BASELINE props $file --json")
