@@ -46,11 +46,11 @@ def parser() -> argparse.ArgumentParser:
     b.add_argument("--scheduler", help="address of a running scheduler, tcp://HOST:PORT "
                                        "(default: a LocalCluster on this machine)")
     b.add_argument("--workers", type=int, default=None,
-                   help="LocalCluster workers: threads of one worker in this process (default: "
+                   help="LocalCluster workers, of one thread each, in this process (default: "
                         "the number of cores)")
     b.add_argument("--processes", action="store_true",
-                   help="LocalCluster of --workers worker processes instead of threads: a file "
-                        "that crashes the analysis takes down only its worker")
+                   help="LocalCluster of --workers worker processes instead: a file that "
+                        "crashes the analysis takes down only its worker")
     b.add_argument("--density", type=float, help="mass per unit volume (default 1)")
     b.add_argument("--weld-tolerance", type=float,
                    help="weld vertices closer than T for the topology (default: exact)")

@@ -262,13 +262,14 @@ LOCAL_CLUSTER_CONFIG: Dict[str, Any] = {
 
 
 def local_cluster(workers: int, processes: bool = False) -> Any:
-    """A ``distributed.LocalCluster`` for batches, no dashboard, :data:`LOCAL_CLUSTER_CONFIG`.
+    """A ``distributed.LocalCluster`` of ``workers`` workers of one thread each, no dashboard,
+    :data:`LOCAL_CLUSTER_CONFIG`.
 
-    By default one worker of ``workers`` threads in this process: the analysis releases the GIL,
-    and no row is pickled or sent between processes (on a 2-core machine 2 threads beat 2 worker
-    processes, docs/python.md, "Speed"). With ``processes``, ``workers`` worker processes of one
-    thread each, under nannies: a file that crashes its worker's process takes down only that
-    worker, which is restarted and its group run again.
+    By default the workers run in this process: the analysis releases the GIL, and no row is
+    pickled or sent between processes (on a 2-core machine 2 such workers beat 2 worker processes,
+    docs/python.md, "Speed"). With ``processes``, each worker is a process of its own under a
+    nanny: a file that crashes its worker's process takes down only that worker, which is
+    restarted and its group run again.
     """
     import dask
     from distributed import LocalCluster
@@ -277,7 +278,7 @@ def local_cluster(workers: int, processes: bool = False) -> Any:
         if processes:
             return LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
                                 dashboard_address=None)
-        return LocalCluster(n_workers=1, threads_per_worker=workers, processes=False,
+        return LocalCluster(n_workers=workers, threads_per_worker=1, processes=False,
                             dashboard_address=None)
 
 

@@ -201,11 +201,12 @@ def test_groups_are_consecutive_and_bounded():
 
 
 def test_threaded_local_cluster_with_groups(files, tmp_path):
-    """The command's default cluster: worker threads in this process."""
+    """The command's default cluster: workers of one thread each in this process."""
     paths, hostile = files
     out = str(tmp_path / "results.jsonl")
     with local_cluster(2) as cluster, distributed.Client(cluster) as c:
-        assert sum(w["nthreads"] for w in c.scheduler_info()["workers"].values()) == 2
+        workers = c.scheduler_info()["workers"].values()
+        assert len(workers) == 2 and all(w["nthreads"] == 1 for w in workers)
         counts = run_batch(paths, out, c, progress=False, group=3)
     assert counts["written"] == len(paths) and counts["errors"] == len(hostile)
     with open(out) as f:
