@@ -42,7 +42,10 @@ def check_file(cli, path):
     assert mesh.is_winding_consistent == doc["orientation_consistent"]
     assert mesh.is_watertight == (doc["boundary_edges"] == 0 and doc["nonmanifold_edges"] == 0)
     mp = mesh.mass_properties(density=2.5)
-    code, doc25, _ = run_cli(cli, "props", str(path), "--json", "--density", "2.5", "--fast")
+    # With topology: the reading the mesh's figures come from (the streamed sums of --fast place
+    # their reference point by a sample, and may differ in the last bits).
+    code, doc25, _ = run_cli(cli, "props", str(path), "--json", "--density", "2.5",
+                             "--no-self-intersections")
     if code == 0:
         assert mp["mass"] == doc25["mass"]
         assert same(mp["inertia"], doc25["inertia_com"])
