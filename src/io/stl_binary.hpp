@@ -27,8 +27,8 @@ inline constexpr std::size_t stl_record_bytes = 50;
 // bytes into it. The passes are compiled for each layout below (the four-record gather needs
 // constant offsets), chosen once per file by with_record_layout().
 struct TriangleRecordLayout {
-  std::uint32_t stride;
-  std::uint32_t coords;
+  std::size_t stride;
+  std::size_t coords;
   friend constexpr bool operator==(const TriangleRecordLayout&,
                                    const TriangleRecordLayout&) = default;
 };
