@@ -306,7 +306,9 @@ Analysis analyze(std::span<const char> bytes, const std::string& name,
       return r;
     }
   }
-  if (format == MeshFormat::glb && (!options.topology || weld_from_records))
+  // (--format gltf reads a GLB too.)
+  if ((format == MeshFormat::glb || format == MeshFormat::gltf) &&
+      (!options.topology || weld_from_records))
     if (auto r = glb_triangle_report(bytes, name, options, file)) return std::move(*r);
   if (auto r = summed_ply_report(bytes, name, format, options, release_records))
     return std::move(*r);

@@ -233,6 +233,18 @@ TEST(GlbStreamed, IdentityTransformsAreStreamed) {
   }
 }
 
+// --format glb or gltf (either reads both) streams it as detection does.
+TEST(GlbStreamed, ForcedGltfFormatsStreamIt) {
+  const std::string glb = write_mesh_bytes(stream_soup(test::uv_sphere(1, 5, 7)), MeshFormat::glb);
+  for (MeshFormat format : {MeshFormat::glb, MeshFormat::gltf}) {
+    AnalysisOptions o = stream_options(false);
+    o.format = format;
+    const Analysis a = analyze_bytes({glb.data(), glb.size()}, "m.glb", o);
+    EXPECT_TRUE(a.streamed);
+    test::expect_same_mass(a.mass, stream_analyze(glb, "m.glb", false).mass);
+  }
+}
+
 // Indexed, a translated node, two primitives: not the streamed case; the Mesh path's figures bit
 // for bit.
 TEST(GlbStreamed, OtherGlbsTakeTheMeshPath) {
