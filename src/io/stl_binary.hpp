@@ -146,9 +146,9 @@ inline void stl_triangles4(const unsigned char* records, Vec3<Double4> out[3]) {
   }
 }
 
-// Throws InputError (byte offset of the first bad float) when any vertex coordinate of the view is
-// NaN or infinite. Cheap enough to run up front; a fused accumulation may instead call it only when
-// its result is not finite, to name the culprit.
+// Throws InputError (byte offset in the file of the first bad float, whatever the view's layout)
+// when any vertex coordinate of the view is NaN or infinite. Cheap enough to run up front; a fused
+// accumulation may instead call it only when its result is not finite, to name the culprit.
 void check_binary_stl_finite(const BinaryStlView& view, const std::string& name);
 
 }  // namespace pgamesh
