@@ -3,8 +3,9 @@
 # --preset sanitize && cmake --build --preset sanitize`): first once over every file of its seed
 # corpus (the replay: each seed, and each regression input kept there, is a test), then for SECONDS
 # on a scratch copy of it: fuzz/corpus/<name>/ for fuzz_read_<name> and fuzz_<name> (the
-# auto-detecting reader gets all the readers' seeds, fuzz_read_ply_topology the PLY ones). As
-# many harnesses run at once as there are cores. The seeds in the repository are never modified.
+# auto-detecting reader gets all the readers' seeds, fuzz_read_ply_topology the PLY ones,
+# fuzz_gltf_stream the glTF ones). As many harnesses run at once as there are cores. The seeds in
+# the repository are never modified.
 # Crashes, leaks, timeouts (10 s) and RSS above 2 GB fail the run; the reproducer is left in
 # build/sanitize/fuzz-artifacts/. Usage: scripts/fuzz.sh [SECONDS]  (default 30)
 set -euo pipefail

@@ -131,9 +131,10 @@ void add_props_command(CLI::App& app) {
   sub->add_flag("--about-origin", o->about_origin,
                 "also print the inertia tensor about the coordinate origin");
   sub->add_flag("--no-topology,--fast", o->fast,
-                "skip the weld/edge pass (STL, binary or ASCII, is then streamed\n"
-                "from the mapped file without building a mesh; a PLY's faces\n"
-                "are summed as they are read, only its vertices kept)");
+                "skip the weld/edge pass (STL, binary or ASCII, and a GLB of one\n"
+                "non-indexed triangle list are then streamed from the file\n"
+                "without building a mesh; a PLY's faces are summed as they are\n"
+                "read, only its vertices kept)");
   sub->add_flag_callback(
       "--no-self-intersections", [o] { o->analysis.topology_options.self_intersections = false; },
       "do not look for intersecting faces (the longest step of the\n"

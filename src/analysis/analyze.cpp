@@ -212,6 +212,57 @@ Analysis analyze_mesh(const Mesh& mesh, const MeshSource& source, const Analysis
 
 namespace {
 
+// The report of float32 triangle records, a binary STL's or a GLB's (BinaryStlView::layout),
+// never read into a Mesh: without topology, their mass properties are streamed from the records;
+// with exact-weld topology, they are welded straight from the records (welded_triangles.hpp), and
+// both the mass properties and the topology come from the welded triangles. The file's format is
+// `format`; its unit and parts are the caller's to add.
+Analysis records_report(const BinaryStlView& view, const std::string& name, MeshFormat format,
+                        const AnalysisOptions& options, bool release_records) {
+  Analysis r;
+  r.file = name;
+  r.format = format;
+  r.single_precision = true;
+  r.density_from_mass = options.mass.mass.has_value();
+  if (!options.topology) {
+    r.streamed = true;
+    r.mass = binary_stl_mass_properties(view, name, options.mass, release_records);
+  } else {
+    const WeldedTriangles welded = weld_binary_stl(view, name, release_records);
+    const Vec3d reference = bounding_box(welded.positions).centre();  // reference_point()
+    WeldedTriangleProps props =
+        analyze_welded_triangles(welded, reference, options.mass, options.topology_options, true);
+    r.mass = std::move(props.mass);
+    r.topology = std::move(props.topology);
+  }
+  r.warnings = r.mass.warnings;
+  judge(r);
+  return r;
+}
+
+// The report of a GLB that is one untransformed, non-indexed float32 triangle list
+// (glb_triangle_list, readers.hpp): its positions streamed as 36-byte records through the binary
+// STL's passes, the figures of a binary STL of the same triangles bit for bit; the unit (metre),
+// the counts and the one part those of the Mesh path below. nullopt for any other GLB, and for one
+// the passes find fault with (a non-finite coordinate): the reader then reads it and reports what
+// it reports.
+std::optional<Analysis> glb_triangle_report(std::span<const char> bytes, const std::string& name,
+                                            const AnalysisOptions& options, int file) {
+  const auto list = detail::glb_triangle_list(bytes, name);
+  if (!list) return std::nullopt;
+  const BinaryStlView view{reinterpret_cast<const unsigned char*>(bytes.data()) + list->offset,
+                           list->triangles, file, packed_triangle_layout, list->offset};
+  try {
+    Analysis r = records_report(view, name, MeshFormat::glb, options, file >= 0);
+    r.unit = LengthUnit::meter;  // glTF 2.0 §3.4, as read_gltf states it
+    r.parts =
+        whole_as_part(r, MeshPart{list->part_name, 0, static_cast<std::uint32_t>(list->triangles)});
+    return r;
+  } catch (const InputError&) {
+    return std::nullopt;
+  }
+}
+
 // The report of `bytes`. A binary STL is not read into a Mesh: without topology its mass
 // properties are streamed from the records; with exact-weld topology it is welded straight from
 // the records (welded_triangles.hpp), and both the mass properties and the topology come from the
@@ -219,7 +270,8 @@ namespace {
 // `file` is the open descriptor of the read-only file mapping that `bytes` are (MappedFile), or −1
 // for bytes of our own: with a mapping, the binary STL passes read the records from the file
 // instead of touching the mapping (BinaryStlView::file), and the other readers give the mapping's
-// pages back as they pass.
+// pages back as they pass. A GLB of one untransformed, non-indexed float32 triangle list takes the
+// binary STL's passes too (glb_triangle_report).
 Analysis analyze(std::span<const char> bytes, const std::string& name,
                  const AnalysisOptions& options, int file) {
   const bool release_records = file >= 0;
@@ -236,25 +288,7 @@ Analysis analyze(std::span<const char> bytes, const std::string& name,
   if ((!options.topology || weld_from_records) && stl_allowed) {
     if (auto view = binary_stl_view(bytes, name)) {
       view->file = file;
-      Analysis r;
-      r.file = name;
-      r.format = MeshFormat::stl_binary;
-      r.single_precision = true;
-      r.density_from_mass = options.mass.mass.has_value();
-      if (!options.topology) {
-        r.streamed = true;
-        r.mass = binary_stl_mass_properties(*view, name, options.mass, release_records);
-      } else {
-        const WeldedTriangles welded = weld_binary_stl(*view, name, release_records);
-        const Vec3d reference = bounding_box(welded.positions).centre();  // reference_point()
-        WeldedTriangleProps props = analyze_welded_triangles(welded, reference, options.mass,
-                                                             options.topology_options, true);
-        r.mass = std::move(props.mass);
-        r.topology = std::move(props.topology);
-      }
-      r.warnings = r.mass.warnings;
-      judge(r);
-      return r;
+      return records_report(*view, name, MeshFormat::stl_binary, options, release_records);
     }
     // ASCII STL without topology: the reader's grammar hands the facets to a summing consumer
     // instead of a Mesh, on every core (stl_ascii_sums.hpp): the figures, warnings and errors of
@@ -272,6 +306,10 @@ Analysis analyze(std::span<const char> bytes, const std::string& name,
       return r;
     }
   }
+  // (--format gltf reads a GLB too.)
+  if ((format == MeshFormat::glb || format == MeshFormat::gltf) &&
+      (!options.topology || weld_from_records))
+    if (auto r = glb_triangle_report(bytes, name, options, file)) return std::move(*r);
   if (auto r = summed_ply_report(bytes, name, format, options, release_records))
     return std::move(*r);
   if (auto r = ply_topology_report(bytes, name, format, options, release_records))

@@ -132,6 +132,7 @@ class GltfReader {
       : bytes_(bytes), name_(name), external_files_(external_files) {}
 
   void read(Mesh& mesh, MeshSource& source);
+  std::optional<GlbTriangleList> triangle_list();
 
  private:
   [[noreturn]] void fail(std::uint64_t offset, const std::string& problem) const {
@@ -142,6 +143,12 @@ class GltfReader {
   }
 
   void parse_container();
+  void parse_document();
+  template <class Instance>
+  void walk_scene(Instance&& instance);
+  std::string part_name(std::size_t node, std::size_t mesh_index) const;
+  void check_output_room(const std::string& ppath, std::uint64_t vertices,
+                         std::uint64_t corners) const;
   const Json& array(const char* key) const;
   const Json& at(const char* key, std::size_t index, const std::string& from) const;
   std::uint64_t uint_field(const Json& obj, const char* key, const std::string& path,
@@ -604,17 +611,8 @@ void GltfReader::add_instance(std::size_t node, std::size_t mesh_index, const Af
   }
   MeshPart part;
   part.first_face = static_cast<std::uint32_t>(mesh.face_count());
-  const Json& n = array("nodes")[node];
-  if (n.contains("name") && n["name"].is_string())
-    part.name = n["name"].get<std::string>();
-  else if (m.contains("name") && m["name"].is_string())
-    part.name = m["name"].get<std::string>();
-  else
-    part.name = "nodes[" + std::to_string(node) + "]";
+  part.name = part_name(node, mesh_index);
 
-  // The output is bounded by the input: instancing may repeat a mesh, not without end.
-  const std::uint64_t max_output =
-      std::max<std::uint64_t>(std::uint64_t{1} << 20, 16 * input_bytes_);
   for (std::size_t p = 0; p < prims->size(); ++p) {
     const std::string ppath = mpath + ".primitives[" + std::to_string(p) + "]";
     const Json& prim = (*prims)[p];
@@ -640,10 +638,7 @@ void GltfReader::add_instance(std::size_t node, std::size_t mesh_index, const Af
     }
     const std::uint64_t base = mesh.vertices.size();
     const std::uint64_t corners = mesh.corners.size() + 3 * idx.size();
-    if (base + pa.count > max_vertices || base + pa.count > max_output || corners > max_vertices ||
-        corners > max_output * 3)
-      fail(ppath, "the instanced meshes hold more vertices than this reader accepts (" +
-                      std::to_string(max_output) + ", 16 per byte of input)");
+    check_output_room(ppath, base + pa.count, corners);
     // Geometric growth: a mesh instanced many times must not be copied at every instance.
     grow(mesh.vertices, base + pa.count);
     positions(pa, world, mesh.vertices);
@@ -684,7 +679,31 @@ void GltfReader::add_instance(std::size_t node, std::size_t mesh_index, const Af
   source.parts.push_back(std::move(part));
 }
 
-void GltfReader::read(Mesh& mesh, MeshSource& source) {
+// The name of the part that node `node` instancing meshes[mesh_index] becomes.
+std::string GltfReader::part_name(std::size_t node, std::size_t mesh_index) const {
+  const Json& n = array("nodes")[node];
+  const Json& m = array("meshes")[mesh_index];
+  if (n.contains("name") && n["name"].is_string()) return n["name"].get<std::string>();
+  if (m.contains("name") && m["name"].is_string()) return m["name"].get<std::string>();
+  return "nodes[" + std::to_string(node) + "]";
+}
+
+// Fails at `ppath` when a mesh of `vertices` vertices and `corners` corners (those read so far and
+// the next primitive's) is more than this reader accepts: the output is bounded by the input
+// (instancing may repeat a mesh, not without end) and by the 32-bit indices.
+void GltfReader::check_output_room(const std::string& ppath, std::uint64_t vertices,
+                                   std::uint64_t corners) const {
+  const std::uint64_t max_output =
+      std::max<std::uint64_t>(std::uint64_t{1} << 20, 16 * input_bytes_);
+  if (vertices > max_vertices || vertices > max_output || corners > max_vertices ||
+      corners > max_output * 3)
+    fail(ppath, "the instanced meshes hold more vertices than this reader accepts (" +
+                    std::to_string(max_output) + ", 16 per byte of input)");
+}
+
+// The container and the document's header: the JSON parsed, its glTF version and the extensions
+// it requires checked.
+void GltfReader::parse_document() {
   input_bytes_ = bytes_.size();
   parse_container();
   const auto asset = doc_.find("asset");
@@ -705,7 +724,12 @@ void GltfReader::read(Mesh& mesh, MeshSource& source) {
     }
   }
   for (const Json& b : array("buffers")) (void)b;  // validated when used
+}
 
+// Calls instance(node, mesh index, world transform) for each node of the scene that instances a
+// mesh, depth first in the order of the scene's roots and of each node's children.
+template <class Instance>
+void GltfReader::walk_scene(Instance&& instance) {
   const Json& nodes = array("nodes");
   // The roots: the default scene's nodes, else every node that is no node's child. Each node has
   // at most one parent (glTF 2.0 §3.5.1): a second use, or a cycle, is an error.
@@ -764,12 +788,18 @@ void GltfReader::read(Mesh& mesh, MeshSource& source) {
     const Affine world = compose(parent_world, local_transform(node));
     const Json& n = nodes[node];
     if (n.contains("mesh"))
-      add_instance(node, uint_field(n, "mesh", "nodes[" + std::to_string(node) + "]"), world, mesh,
-                   source);
+      instance(node, uint_field(n, "mesh", "nodes[" + std::to_string(node) + "]"), world);
     if (const auto ch = n.find("children"); ch != n.end())
       for (auto c = ch->rbegin(); c != ch->rend(); ++c)
         stack.push_back({c->get<std::size_t>(), world});
   }
+}
+
+void GltfReader::read(Mesh& mesh, MeshSource& source) {
+  parse_document();
+  walk_scene([&](std::size_t node, std::size_t mesh_index, const Affine& world) {
+    add_instance(node, mesh_index, world, mesh, source);
+  });
   if (skipped_primitives_)
     source.warnings.push_back("glTF: " + std::to_string(skipped_primitives_) +
                               " primitives of points or lines (modes 0 to 3) skipped: no faces");
@@ -778,7 +808,66 @@ void GltfReader::read(Mesh& mesh, MeshSource& source) {
       LengthUnit::meter;  // glTF 2.0 §3.4: "the units for all linear distances are meters"
 }
 
+// Whether the transform moves no point: the identity, or a matrix of its exact ones and zeros (a
+// node that writes out an identity matrix, a zero translation, a unit rotation or scale), under
+// which the reader copies each coordinate's value.
+bool moves_nothing(const Affine& a) {
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 4; ++j)
+      if (a.m[i][j] != (i == j ? 1.0 : 0.0)) return false;
+  return true;
+}
+
+std::optional<GlbTriangleList> GltfReader::triangle_list() {
+  if (bytes_.size() < 4 || le32(bytes_.data()) != glb_magic) return std::nullopt;
+  parse_document();
+  if (!bin_chunk_) return std::nullopt;
+  struct Instance {
+    std::size_t node, mesh;
+    Affine world;
+  };
+  std::vector<Instance> instances;
+  walk_scene([&](std::size_t node, std::size_t mesh_index, const Affine& world) {
+    instances.push_back({node, mesh_index, world});
+  });
+  if (instances.size() != 1 || !moves_nothing(instances[0].world)) return std::nullopt;
+  const std::size_t node = instances[0].node, mesh_index = instances[0].mesh;
+  const std::string mpath = "meshes[" + std::to_string(mesh_index) + "]";
+  const Json& m = at("meshes", mesh_index, "nodes[" + std::to_string(node) + "].mesh");
+  const auto prims = m.find("primitives");
+  if (prims == m.end() || !prims->is_array() || prims->size() != 1) return std::nullopt;
+  const std::string ppath = mpath + ".primitives[0]";
+  const Json& prim = (*prims)[0];
+  if (!prim.is_object() || prim.contains("indices") || uint_field(prim, "mode", ppath, 4) != 4)
+    return std::nullopt;
+  const auto attrs = prim.find("attributes");
+  if (attrs == prim.end() || !attrs->is_object() || !attrs->contains("POSITION"))
+    return std::nullopt;
+  // The accessor resolved and bounds-checked as the reader resolves it.
+  const AccessorView a = position_accessor(uint_field(*attrs, "POSITION", ppath + ".attributes"));
+  if (a.component_type != 5126 || a.normalized || !a.data || a.stride != 12 || a.sparse_values ||
+      a.count % 3)
+    return std::nullopt;
+  const auto first = reinterpret_cast<std::uintptr_t>(a.data);
+  const auto chunk = reinterpret_cast<std::uintptr_t>(bin_chunk_->data());
+  if (first < chunk || first - chunk > bin_chunk_->size() ||
+      a.count > (bin_chunk_->size() - (first - chunk)) / 12)
+    return std::nullopt;  // a buffer of its own (a data: URI), not the BIN chunk
+  check_output_room(ppath, a.count, 3 * a.count);
+  return GlbTriangleList{static_cast<std::uint64_t>(a.data - bytes_.data()), a.count / 3,
+                         part_name(node, mesh_index)};
+}
+
 }  // namespace
+
+std::optional<GlbTriangleList> glb_triangle_list(std::span<const char> bytes,
+                                                 const std::string& name) {
+  try {
+    return GltfReader(bytes, name, false).triangle_list();
+  } catch (const InputError&) {
+    return std::nullopt;  // read_gltf reports it
+  }
+}
 
 void read_gltf(std::span<const char> bytes, const std::string& name, Mesh& mesh, MeshSource& source,
                bool external_files) {

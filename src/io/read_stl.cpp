@@ -41,22 +41,25 @@ std::optional<BinaryStlView> binary_stl_view(std::span<const char> bytes, const 
 }
 
 void check_binary_stl_finite(const BinaryStlView& view, const std::string& name) {
-  detail::for_record_blocks(
-      view, 0, view.count, name, [&](const unsigned char* r, std::uint64_t b, std::uint64_t e) {
-        for (std::uint64_t i = b; i < e; ++i, r += stl_record_bytes) {
-          Vec3d v[3];
-          stl_triangle(r, v);
-          for (int k = 0; k < 3; ++k)
-            for (int j = 0; j < 3; ++j)
-              if (!std::isfinite(v[k][j]))
-                throw InputError(name,
-                                 detail::byte_position(stl_header_bytes + stl_record_bytes * i +
-                                                       12 + 12 * static_cast<unsigned>(k) +
-                                                       4 * static_cast<unsigned>(j)),
-                                 "non-finite coordinate (NaN or infinity) in triangle " +
-                                     std::to_string(i + 1) + ", vertex " + std::to_string(k + 1));
-        }
-      });
+  with_record_layout(view.layout, [&](auto layout) {
+    constexpr TriangleRecordLayout L = decltype(layout)::layout;
+    detail::for_record_blocks(
+        view, 0, view.count, name, [&](const unsigned char* r, std::uint64_t b, std::uint64_t e) {
+          for (std::uint64_t i = b; i < e; ++i, r += L.stride) {
+            Vec3d v[3];
+            stl_triangle<L>(r, v);
+            for (int k = 0; k < 3; ++k)
+              for (int j = 0; j < 3; ++j)
+                if (!std::isfinite(v[k][j]))
+                  throw InputError(name,
+                                   detail::byte_position(view.first_record_offset + L.stride * i +
+                                                         L.coords + 12 * static_cast<unsigned>(k) +
+                                                         4 * static_cast<unsigned>(j)),
+                                   "non-finite coordinate (NaN or infinity) in triangle " +
+                                       std::to_string(i + 1) + ", vertex " + std::to_string(k + 1));
+          }
+        });
+  });
 }
 
 namespace detail {

@@ -39,6 +39,23 @@ void read_3mf(std::span<const char> bytes, const std::string& name, Mesh& mesh, 
 void read_gltf(std::span<const char> bytes, const std::string& name, Mesh& mesh, MeshSource& source,
                bool external_files);
 
+// Where a GLB holds its triangles when they can be streamed as records (packed_triangle_layout of
+// io/stl_binary.hpp) instead of read into a Mesh: its scene is one node (its world transform
+// moving no point) instancing one mesh of one primitive, a non-indexed triangle list (mode 4)
+// whose POSITION accessor is float32 VEC3, neither sparse nor normalized, tightly packed
+// (byteStride absent or 12) in the GLB's own binary chunk, a multiple of 3 elements.
+struct GlbTriangleList {
+  std::uint64_t offset = 0;  // of the first coordinate, in the file
+  std::uint64_t triangles = 0;
+  std::string part_name;  // the MeshPart's name read_gltf gives the node
+};
+
+// The triangle list of such a GLB, found by the reader's own parse and checks (the accessor
+// inside its bufferView, the bufferView inside its buffer, the buffer inside the chunk), or
+// nullopt for any other bytes, a malformed or hostile file included: read_gltf reports those.
+std::optional<GlbTriangleList> glb_triangle_list(std::span<const char> bytes,
+                                                 const std::string& name);
+
 // The boundary sums of a PLY file's faces about `reference` (reference_point of its vertices),
 // accumulated as mesh_boundary_sums accumulates them, and the face counts.
 struct PlyFaceSums {

@@ -13,10 +13,12 @@ namespace pgamesh::detail {
 
 const unsigned char* record_block(const BinaryStlView& view, std::uint64_t first,
                                   std::uint64_t count, const std::string& name) {
-  if (view.file < 0) return view.records + stl_record_bytes * first;
+  const std::uint64_t stride = view.layout.stride;
+  if (view.file < 0) return view.records + stride * first;
   thread_local std::vector<unsigned char> buffer(records_per_block * stl_record_bytes);
-  const std::uint64_t offset = stl_header_bytes + stl_record_bytes * first;
-  const std::size_t bytes = stl_record_bytes * count;
+  const std::uint64_t offset = view.first_record_offset + stride * first;
+  const std::size_t bytes = stride * count;
+  if (buffer.size() < bytes) buffer.resize(bytes);
   std::size_t done = 0;
   while (done < bytes) {
     const ssize_t n =

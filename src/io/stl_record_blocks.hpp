@@ -15,7 +15,7 @@
 
 namespace pgamesh::detail {
 
-// Records per block: 200 KB, which a core's L2 cache holds while the block is used.
+// Records per block: 200 KB of STL records, which a core's L2 cache holds while the block is used.
 inline constexpr std::uint64_t records_per_block = 4096;
 
 // Records [first, first + count) of the view, count ≤ records_per_block: a pointer into the view's

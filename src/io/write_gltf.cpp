@@ -55,7 +55,8 @@ float to_float32(double x) {
 
 std::string write_gltf(const Mesh& mesh, bool binary) {
   using Json = nlohmann::json;
-  // The buffer: positions (12 bytes a vertex), then the triangles' indices (4 bytes a corner).
+  // The buffer: positions (12 bytes a vertex), then the triangles' indices (4 bytes a corner) but
+  // for a soup (below).
   std::string buffer;
   std::uint64_t triangles = 0;
   for (std::size_t f = 0; f < mesh.face_count(); ++f)
@@ -74,8 +75,16 @@ std::string write_gltf(const Mesh& mesh, bool binary) {
       hi[k] = std::max(hi[k], f);
       put_le32(buffer, std::bit_cast<std::uint32_t>(f));
     }
+  // A triangle soup whose corners are its vertices in order (a binary STL read, three vertices a
+  // triangle) is written without indices: they would say 0, 1, 2, … (glTF 2.0 §3.7.2.1, a
+  // primitive without indices), and a GLB of them is then streamed like a binary STL
+  // (docs/formats.md, "glTF 2.0").
+  bool soup =
+      mesh.vertices.size() == 3 * mesh.face_count() && mesh.corners.size() == mesh.vertices.size();
+  for (std::size_t f = 0; soup && f < mesh.face_count(); ++f) soup = mesh.face_size(f) == 3;
+  for (std::size_t i = 0; soup && i < mesh.corners.size(); ++i) soup = mesh.corners[i] == i;
   const std::size_t index_offset = buffer.size();
-  for (std::size_t f = 0; f < mesh.face_count(); ++f) {
+  for (std::size_t f = 0; f < mesh.face_count() && !soup; ++f) {
     const std::uint32_t* c = mesh.face(f);
     for (std::size_t k = 1; k + 1 < mesh.face_size(f); ++k)
       for (std::uint32_t i : {c[0], c[k], c[k + 1]}) put_le32(buffer, i);
@@ -88,10 +97,9 @@ std::string write_gltf(const Mesh& mesh, bool binary) {
   } else {
     doc["scenes"] = Json::array({Json::object({{"nodes", {0}}})});
     doc["nodes"] = Json::array({Json::object({{"mesh", 0}})});
-    doc["meshes"] = Json::array({Json::object(
-        {{"primitives",
-          Json::array({Json::object(
-              {{"attributes", {{"POSITION", 0}}}, {"indices", 1}, {"mode", 4}})})}})});
+    Json primitive = {{"attributes", {{"POSITION", 0}}}, {"mode", 4}};
+    if (!soup) primitive["indices"] = 1;
+    doc["meshes"] = Json::array({Json::object({{"primitives", Json::array({primitive})}})});
     Json min = Json::array(), max = Json::array();
     for (int k = 0; k < 3; ++k) {
       min.push_back(static_cast<double>(lo[k]));
@@ -102,18 +110,19 @@ std::string write_gltf(const Mesh& mesh, bool binary) {
                                                   {"count", mesh.vertices.size()},
                                                   {"type", "VEC3"},
                                                   {"min", min},
-                                                  {"max", max}}),
-                                    Json::object({{"bufferView", 1},
-                                                  {"componentType", 5125},
-                                                  {"count", 3 * triangles},
-                                                  {"type", "SCALAR"}})});
-    doc["bufferViews"] = Json::array(
-        {Json::object(
-             {{"buffer", 0}, {"byteOffset", 0}, {"byteLength", index_offset}, {"target", 34962}}),
-         Json::object({{"buffer", 0},
-                       {"byteOffset", index_offset},
-                       {"byteLength", buffer.size() - index_offset},
-                       {"target", 34963}})});
+                                                  {"max", max}})});
+    doc["bufferViews"] = Json::array({Json::object(
+        {{"buffer", 0}, {"byteOffset", 0}, {"byteLength", index_offset}, {"target", 34962}})});
+    if (!soup) {
+      doc["accessors"].push_back(Json::object({{"bufferView", 1},
+                                               {"componentType", 5125},
+                                               {"count", 3 * triangles},
+                                               {"type", "SCALAR"}}));
+      doc["bufferViews"].push_back(Json::object({{"buffer", 0},
+                                                 {"byteOffset", index_offset},
+                                                 {"byteLength", buffer.size() - index_offset},
+                                                 {"target", 34963}}));
+    }
     Json b = {{"byteLength", buffer.size()}};
     if (!binary) b["uri"] = "data:application/octet-stream;base64," + base64(buffer);
     doc["buffers"] = Json::array({b});

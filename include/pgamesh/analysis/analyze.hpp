@@ -57,9 +57,10 @@ struct Analysis {
 
 // Reads the file at `path` ("-" for standard input) and analyses it. A binary STL is never read
 // into a Mesh: without topology its records are summed as they are read; with the exact weld they
-// are welded straight from the file. Throws InputError (naming the file and the position) for
-// unreadable input, std::invalid_argument for bad options and std::range_error when the
-// coordinates are so large that the area, volume or inertia overflow a double.
+// are welded straight from the file. A GLB of one untransformed, non-indexed float32 triangle list
+// takes the same passes (docs/formats.md, "glTF 2.0"). Throws InputError (naming the file and the
+// position) for unreadable input, std::invalid_argument for bad options and std::range_error when
+// the coordinates are so large that the area, volume or inertia overflow a double.
 Analysis analyze_file(const std::string& path, const AnalysisOptions& options = {});
 
 // The same for bytes already in memory (an upload); `name` names them in errors and the result.

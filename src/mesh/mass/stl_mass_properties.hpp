@@ -16,13 +16,15 @@ namespace pgamesh {
 // at most this many evenly spaced triangles (deterministic, and near the mesh whatever its size).
 inline constexpr std::uint64_t stl_reference_samples = 4096;
 
-// Mass properties of the triangles of a binary STL view, accumulated about the centre of a sample
-// of its records. Fills faces = triangles = view.count and vertices = 3 × count (STL vertices are
-// not shared). Adds the float32 far-from-origin warning when it applies. Throws InputError naming
-// `name` and the byte offset of the first non-finite coordinate when there is one. With
-// `release_records` — only for records in a read-only file mapping — the pages of the records are
-// given back to the kernel as they are summed (madvise MADV_DONTNEED; they stay readable); a view
-// that reads its file (BinaryStlView::file) touches no mapped page and releases none.
+// Mass properties of the triangles of a binary STL view (or of another array of float32 triangle
+// records, BinaryStlView::layout: a GLB's packed positions), accumulated about the centre of a
+// sample of its records. Fills faces = triangles = view.count and vertices = 3 × count (STL
+// vertices are not shared). Adds the float32 far-from-origin warning when it applies. Throws
+// InputError naming `name` and the byte offset of the first non-finite coordinate when there is
+// one. With `release_records` — only for records in a read-only file mapping — the pages of the
+// records are given back to the kernel as they are summed (madvise MADV_DONTNEED; they stay
+// readable); a view that reads its file (BinaryStlView::file) touches no mapped page and releases
+// none.
 MassProperties binary_stl_mass_properties(const BinaryStlView& view, const std::string& name,
                                           const MassOptions& options = {},
                                           bool release_records = false);

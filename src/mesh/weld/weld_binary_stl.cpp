@@ -28,12 +28,13 @@ inline std::uint32_t load_le32(const unsigned char* p) {
   return u;
 }
 
-// Vertex k of the record at r as float32 bits. Returns false for NaN or infinity (all exponent
-// bits set).
+// Vertex k of the record at r, of layout L, as float32 bits. Returns false for NaN or infinity
+// (all exponent bits set).
+template <TriangleRecordLayout L>
 inline bool vertex_key(const unsigned char* r, int k, Key& key) {
   bool finite = true;
   for (int j = 0; j < 3; ++j) {
-    std::uint32_t u = load_le32(r + 12 + 12 * k + 4 * j);
+    std::uint32_t u = load_le32(r + L.coords + 12 * k + 4 * j);
     finite &= (u & 0x7f800000u) != 0x7f800000u;
     key[j] = u;
   }
@@ -54,6 +55,8 @@ struct RangeWeld {
   bool finite = true;
 };
 
+// Welds input vertices [first, last) of the view, whose layout is L, into `out`.
+template <TriangleRecordLayout L>
 void weld_range(const BinaryStlView& view, const std::string& name, std::size_t first,
                 std::size_t last, std::uint32_t* corners, bool release_records, RangeWeld& out) {
   const std::size_t n = last - first;
@@ -68,15 +71,15 @@ void weld_range(const BinaryStlView& view, const std::string& name, std::size_t 
   constexpr std::size_t ahead = 16, key_ahead = 8;
   std::array<std::uint64_t, 32> ring{};
   std::array<Key, 32> ring_key{};
-  detail::PageRelease release(view.records + stl_record_bytes * (first / 3),
+  detail::PageRelease release(view.records + L.stride * (first / 3),
                               detail::releases_mapped_records(view, release_records));
   detail::for_record_blocks(
       view, first / 3, last / 3, name,
       [&](const unsigned char* records, std::uint64_t record_begin, std::uint64_t record_end) {
         const std::size_t begin = 3 * record_begin, end = 3 * record_end;
         auto load = [&](std::size_t i) {
-          out.finite &= vertex_key(records + stl_record_bytes * (i / 3 - record_begin),
-                                   static_cast<int>(i % 3), ring_key[i & 31]);
+          out.finite &= vertex_key<L>(records + L.stride * (i / 3 - record_begin),
+                                      static_cast<int>(i % 3), ring_key[i & 31]);
           ring[i & 31] = detail::Float32KeyTraits::hash(ring_key[i & 31]);
         };
         for (std::size_t i = begin; i < std::min(begin + ahead, end); ++i) load(i);
@@ -91,9 +94,9 @@ void weld_range(const BinaryStlView& view, const std::string& name, std::size_t 
               out.table.find_or_insert(ring_key[i & 31], ring[i & 31], out.keys, inserted);
           if (inserted) out.first_vertex.push_back(static_cast<std::uint32_t>(i));
         }
-        release.passed(view.records + stl_record_bytes * record_end);
+        release.passed(view.records + L.stride * record_end);
       });
-  release.finish(view.records + stl_record_bytes * (last / 3));
+  release.finish(view.records + L.stride * (last / 3));
 }
 
 // found[j] = the id of keys[j] in the table of `low`, or KeyTable::none, for j in [begin, end).
@@ -140,12 +143,16 @@ WeldedTriangles weld_binary_stl(const BinaryStlView& view, const std::string& na
   // thread (1.5 ms at 10^6 triangles) nor faults in a second array.
   detail::reserve_huge(low.first_vertex, n);
   const std::size_t split = view.count >= 2 * records_per_thread ? 3 * (view.count / 2) : n;
-  detail::run_both(
-      split != n, [&] { weld_range(view, name, 0, split, w.corners.data(), release_records, low); },
-      [&] {
-        if (split != n)
-          weld_range(view, name, split, n, w.corners.data() + split, release_records, high);
-      });
+  with_record_layout(view.layout, [&](auto layout) {
+    constexpr TriangleRecordLayout L = decltype(layout)::layout;
+    detail::run_both(
+        split != n,
+        [&] { weld_range<L>(view, name, 0, split, w.corners.data(), release_records, low); },
+        [&] {
+          if (split != n)
+            weld_range<L>(view, name, split, n, w.corners.data() + split, release_records, high);
+        });
+  });
   // A NaN or infinity: name the first one, with its byte offset (throws).
   if (!low.finite || !high.finite) check_binary_stl_finite(view, name);
 

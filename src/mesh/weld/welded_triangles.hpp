@@ -50,11 +50,12 @@ WeldedTriangles weld_triangles(const Mesh& mesh, double tolerance = 0);
 // either (the mesh is left empty). Same results and exceptions as above.
 WeldedTriangles weld_triangles(Mesh&& mesh, double tolerance = 0);
 
-// Welds the records of a binary STL exactly: input vertex 3 i + k is vertex k of record i (the
-// numbering read_mesh gives), and vertices merge when their float32 bit patterns are equal, −0
-// folded to +0 — the same classes, numbering and representatives as weld_map on the read mesh.
-// With `release_records`, the pages of records already welded are returned to the kernel as the
-// pass goes (madvise MADV_DONTNEED; only for a read-only file mapping, whose pages are re-read
+// Welds the records of a binary STL (or of another array of float32 triangle records,
+// BinaryStlView::layout: a GLB's packed positions) exactly: input vertex 3 i + k is vertex k of
+// record i (the numbering read_mesh gives), and vertices merge when their float32 bit patterns are
+// equal, −0 folded to +0 — the same classes, numbering and representatives as weld_map on the read
+// mesh. With `release_records`, the pages of records already welded are returned to the kernel as
+// the pass goes (madvise MADV_DONTNEED; only for a read-only file mapping, whose pages are re-read
 // from the file if touched again); a view that reads its file (BinaryStlView::file) touches no
 // mapped page and releases none. Throws InputError naming `name` for a non-finite coordinate
 // (check_binary_stl_finite) or more vertices than 32-bit indices can hold.
