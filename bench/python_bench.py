@@ -169,7 +169,7 @@ def batch(a, work):
     # start excluded, the workers' import of pgamesh included), into a new results file.
     times = {1: [], 2: []}
     plain = {1: [], 2: []}
-    kind = "process(es)" if a.processes else "thread(s)"
+    kind = "process(es)" if a.processes else "(in this process)"
     for run in range(a.repeat):
         for processes in (1, 2):
             plain[processes].append(plain_processes(paths, processes))
