@@ -60,7 +60,7 @@ def parser() -> argparse.ArgumentParser:
                    help="up vector of the fuel table (default 0,0,1)")
     b.add_argument("--group", type=_positive, metavar="N",
                    help="files analysed by one Dask task (default: about 16 tasks per worker "
-                        "thread, at most 32 files and 8 MB a task; 1 file a task for a small "
+                        "thread, at most 64 files and 8 MB a task; 1 file a task for a small "
                         "batch)")
     b.add_argument("--no-progress", action="store_true", help="no progress bar on stderr")
     return p

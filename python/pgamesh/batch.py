@@ -1,7 +1,7 @@
 """Batches of mesh files on Dask: ``python3 -m pgamesh batch PATHS_OR_GLOBS... --out FILE``.
 
 The files are analysed in Dask tasks of a group of files each (``--group N``; by default about
-16 groups per worker thread, at most 32 files and 8 MB a group): a Dask task costs the scheduler
+16 groups per worker thread, at most 64 files and 8 MB a group): a Dask task costs the scheduler
 and the client a few milliseconds, more than a small part's analysis. Each file's row holds the
 figures of :func:`pgamesh.analyze_file` (``pgamesh props --json``); the client writes a group's
 rows to the output (CSV or JSON Lines, by the extension) when its task completes, and flushes
@@ -203,7 +203,7 @@ class Progress:
 #: The most files and bytes an automatic group holds: enough that a Dask task (a few
 #: milliseconds of the scheduler's and the client's time) costs little next to the analysis, few
 #: enough that the last groups still spread over the workers (docs/python.md, "Batches on Dask").
-GROUP_FILES = 32
+GROUP_FILES = 64
 GROUP_BYTES = 8 << 20
 #: An automatic group is small enough that every worker thread gets at least this many groups.
 GROUPS_PER_THREAD = 16

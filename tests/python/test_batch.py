@@ -187,7 +187,7 @@ def test_groups_are_consecutive_and_bounded():
     assert [k for g in groups for k in g] == small
     assert [len(g) for g in make_groups(small, threads=2, group=40)] == [40, 40, 20]
     assert [len(g) for g in make_groups(small[:5], threads=2)] == [1] * 5
-    assert [len(g) for g in make_groups(small * 100, threads=1)] == [32] * 312 + [16]
+    assert [len(g) for g in make_groups(small * 100, threads=1)] == [64] * 156 + [16]
     # By bytes: files of 3/8 of the limit go two a group (64 files would allow 4), and a file
     # above the limit is alone.
     big = [(f"b{i}", GROUP_BYTES * 3 // 8, 0) for i in range(63)]
