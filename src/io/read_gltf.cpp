@@ -229,6 +229,10 @@ void GltfReader::parse_container() {
       throw InputError(name_, text_position(bytes_.data(), bytes_.data() + at),
                        "invalid JSON: " + std::string(e.what()));
     fail(json_offset_ + at, "invalid JSON: " + std::string(e.what()));
+  } catch (const Json::exception& e) {
+    // The parser's other refusals carry no position: a number beyond a double's range
+    // (out_of_range 406) is reported at the start of the JSON.
+    fail(json_offset_, "invalid JSON: " + std::string(e.what()));
   }
   if (!doc_.is_object()) fail(json_offset_, "the glTF JSON is not an object");
 }

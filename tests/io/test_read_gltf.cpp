@@ -356,6 +356,19 @@ TEST(ReadGltf, BadJsonIsReportedAtItsLine) {
   }
 }
 
+TEST(ReadGltf, NumberBeyondADoubleIsAnInputError) {
+  // nlohmann::json refuses 1e999 with out_of_range, not parse_error: still the reader's error.
+  const std::string text =
+      "{\"asset\": {\"version\": \"2.0\"}, \"nodes\": [{\"scale\": [1e999, 1, 1]}]}";
+  try {
+    read_mesh_bytes({text.data(), text.size()}, "overflow.gltf");
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), "overflow.gltf");
+    EXPECT_NE(std::string(e.what()).find("invalid JSON"), std::string::npos) << e.what();
+  }
+}
+
 std::string glb_of(const GltfJson& doc, const std::string& bin) {
   std::string json = doc.dump();
   json.append((4 - json.size() % 4) % 4, ' ');
