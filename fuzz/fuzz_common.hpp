@@ -19,6 +19,12 @@ inline void require(bool ok) {
   if (!ok) __builtin_trap();
 }
 
+// Whether two doubles have the same bits (NaNs and the sign of zero included): the harnesses that
+// hold two paths to one result compare them so.
+inline bool same_bits(double a, double b) {
+  return std::memcmp(&a, &b, sizeof a) == 0;
+}
+
 inline void check_mesh(const Mesh& m) {
   require(!m.face_offsets.empty() && m.face_offsets.front() == 0);
   require(m.face_offsets.back() == m.corners.size());

@@ -11,14 +11,6 @@
 #include "pgamesh/mesh/mass/mass_properties.hpp"
 #include "pgamesh/mesh/topology/topology.hpp"
 
-namespace {
-
-bool same_bits(double a, double b) {
-  return std::memcmp(&a, &b, sizeof a) == 0;
-}
-
-}  // namespace
-
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace pgamesh;
   const std::span<const char> bytes(reinterpret_cast<const char*>(data), size);
@@ -35,9 +27,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     fuzz::check_mesh(mesh);
     const MassProperties mass = mass_properties(mesh, {}, &source);
     const TopologyReport report = analyze_topology(mesh);
-    fuzz::require(same_bits(mass.volume, props->mass.volume));
-    fuzz::require(same_bits(mass.area, props->mass.area));
-    fuzz::require(same_bits(report.volume_min, props->topology.volume_min));
+    fuzz::require(fuzz::same_bits(mass.volume, props->mass.volume));
+    fuzz::require(fuzz::same_bits(mass.area, props->mass.area));
+    fuzz::require(fuzz::same_bits(report.volume_min, props->topology.volume_min));
     fuzz::require(report.edges == props->topology.edges);
     fuzz::require(report.boundary_edges == props->topology.boundary_edges);
     fuzz::require(report.inconsistent_edges == props->topology.inconsistent_edges);

@@ -17,7 +17,7 @@ using namespace pgamesh;
 namespace {
 
 bool same(double a, double b) {
-  return std::memcmp(&a, &b, sizeof a) == 0;
+  return fuzz::same_bits(a, b);
 }
 bool same(Vec3d a, Vec3d b) {
   return same(a.x, b.x) && same(a.y, b.y) && same(a.z, b.z);
