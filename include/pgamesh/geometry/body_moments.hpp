@@ -141,8 +141,9 @@ pga3::Plane<T> add_triangle(BasicBoundarySums<T>& s, Vec3<T> a, Vec3<T> b, Vec3<
 }
 
 // The sign with which a fan triangle of a polygon face counts in the face's area
-// (docs/mass-properties.md, "Polygon faces"): −1 when its normal `triangle_normal` points against
-// the face's summed normal `face_normal` (the fan folds back over a concave corner), else +1.
+// (docs/conventions.md §6, "Face area of a polygon"): −1 when its normal `triangle_normal` points
+// against the face's summed normal `face_normal` (the fan folds back over a concave corner), else
+// +1.
 inline double fan_area_sign(Vec3d triangle_normal, Vec3d face_normal) {
   return dot(triangle_normal, face_normal) < 0 ? -1.0 : 1.0;
 }
@@ -160,7 +161,8 @@ pga3::Plane<T> add_fan_triangle(BasicBoundarySums<T>& s, Vec3<T> a, Vec3<T> b, V
 // Adds the surface parts of a polygon face of k ≥ 4 corners corner(0), …, corner(k − 1)
 // (relative to the reference point) whose fan carriers (corner(0), corner(i), corner(i + 1)) sum
 // to f: f itself to Σ F, and to the area the signed fan area Σ_i s_i ‖F_i‖, s_i = fan_area_sign of
-// fan triangle i against f. For a planar polygon, concave or not, that is ½‖f‖ (the folded
+// fan triangle i against f (docs/conventions.md §6, "Face area of a polygon"; paper Table 1 for
+// ‖F_i‖ as twice a triangle's area). For a planar polygon, concave or not, that is ½‖f‖ (the folded
 // triangles take back what the others overcount, paper §4c); for a non-planar one it is the area
 // of the fan whose tetrahedra give its volume, which is also what the tank's slices add up
 // (docs/mass-properties.md, "Polygon faces"). A face bent beyond face_planarity_tolerance is
@@ -183,6 +185,7 @@ void add_polygon_surface(BoundarySums& s, std::size_t k, const CornerAt& corner,
   span_corner(b);
   for (std::size_t i = 2; i < k; ++i) {
     const Vec3d c = corner(i);
+    // The fan's carriers again: each one's sign needs their sum f, known only after them all.
     const pga3::Plane<double> t = triangle_carrier(a, b, c);
     area2 += fan_area_sign(t.normal(), n) * pga3::norm(t);
     span_corner(c);
@@ -200,23 +203,28 @@ void add_polygon_surface(BoundarySums& s, std::size_t k, const CornerAt& corner,
   s.planarity.merge(bent);
 }
 
-// Adds the polygon v[0], …, v[n−1] (n ≥ 4, coordinates relative to the reference point) without
-// triangulating it: its carrier is the sum of its boundary-edge carriers joined with v[0]
-// (paper §4c), F = Σ_i (v_i ∨ v_{i+1}) ∨ v_0 = Σ_i v_0 ∨ v_i ∨ v_{i+1}, so the solid parts are
-// those of the fan of signed tetrahedra (o, v_0, v_i, v_{i+1}), exact for a planar polygon,
-// concave or not (the fan's negative tetrahedra cancel what the positive ones overcount); the
-// surface parts are add_polygon_surface's.
-inline void add_polygon(BoundarySums& s, const Vec3d* v, std::size_t n) {
+// Adds the polygon of n ≥ 4 corners corner(0), …, corner(n − 1) (relative to the reference point)
+// without triangulating it: its carrier is the sum of its boundary-edge carriers joined with its
+// first corner v_0 (paper §4c), F = Σ_i (v_i ∨ v_{i+1}) ∨ v_0 = Σ_i v_0 ∨ v_i ∨ v_{i+1}, so the
+// solid parts are those of the fan of signed tetrahedra (o, v_0, v_i, v_{i+1}), exact for a planar
+// polygon, concave or not (the fan's negative tetrahedra cancel what the positive ones
+// overcount); the surface parts are add_polygon_surface's.
+template <class CornerAt>
+void add_polygon(BoundarySums& s, std::size_t n, const CornerAt& corner) {
+  const Vec3d a = corner(0);
+  Vec3d b = corner(1);
   pga3::Plane<double> f{};
-  for (std::size_t i = 1; i + 1 < n; ++i) {
-    const pga3::Plane<double> t = add_tetrahedron(s, v[0], v[i], v[i + 1]);
-    f.e0 += t.e0;
-    f.e1 += t.e1;
-    f.e2 += t.e2;
-    f.e3 += t.e3;
+  for (std::size_t i = 2; i < n; ++i) {
+    const Vec3d c = corner(i);
+    f += add_tetrahedron(s, a, b, c);
+    b = c;
   }
-  const auto corner = [v](std::size_t i) { return v[i]; };
   add_polygon_surface(s, n, corner, f);
+}
+
+// The same for corners v[0], …, v[n − 1] in an array.
+inline void add_polygon(BoundarySums& s, const Vec3d* v, std::size_t n) {
+  add_polygon(s, n, [v](std::size_t i) { return v[i]; });
 }
 
 // The moments of the solid at density 1, about the reference point.

@@ -12,9 +12,8 @@
 namespace pgamesh {
 
 // The sums of one face with `k` corners, `corner(i)` giving corner i relative to the reference
-// point: a triangle by add_triangle, a larger polygon by its fan's tetrahedra and
-// add_polygon_surface (its signed fan area, not Σ ‖F‖, which overcounts a concave polygon). Faces
-// with fewer than three corners add nothing.
+// point: a triangle by add_triangle, a larger polygon by add_polygon (its signed fan area, not
+// Σ ‖F‖, which overcounts a concave polygon). Faces with fewer than three corners add nothing.
 template <class CornerAt>
 BoundarySums polygon_face_sums(std::size_t k, CornerAt corner) {
   BoundarySums p;
@@ -23,19 +22,7 @@ BoundarySums polygon_face_sums(std::size_t k, CornerAt corner) {
     add_triangle(p, corner(0), corner(1), corner(2));
     return p;
   }
-  const Vec3d a = corner(0);
-  Vec3d b = corner(1);
-  pga3::Plane<double> f{};
-  for (std::size_t i = 2; i < k; ++i) {
-    const Vec3d c = corner(i);
-    const pga3::Plane<double> t = add_tetrahedron(p, a, b, c);
-    f.e0 += t.e0;
-    f.e1 += t.e1;
-    f.e2 += t.e2;
-    f.e3 += t.e3;
-    b = c;
-  }
-  add_polygon_surface(p, k, corner, f);
+  add_polygon(p, k, corner);
   return p;
 }
 

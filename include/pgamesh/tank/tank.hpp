@@ -22,7 +22,7 @@ struct Tank {
   std::vector<std::array<std::uint32_t, 3>> triangles;
   // Per triangle, 1 where a polygon's fan folds back over a concave corner (fan_area_sign = −1):
   // its area counts negatively, so the wetted area of every slice is the faces' signed fan area
-  // (docs/mass-properties.md, "Polygon faces"). Empty when no triangle folds.
+  // (docs/conventions.md §6, "Face area of a polygon"). Empty when no triangle folds.
   std::vector<std::uint8_t> folded;
   Vec3d lower{}, upper{};  // bounding box of the vertices
   Vec3d reference{};       // centre of the bounding box: sums are accumulated about it

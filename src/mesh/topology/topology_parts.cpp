@@ -131,10 +131,7 @@ BoundarySums surface_sums(std::uint32_t k, const CornerAt& corner, Vec3d ref) {
     const Vec3d c = relative(i);
     const pga3::Plane<double> carrier = triangle_carrier(a, b, c);
     p.volume6 += origin_join(carrier);  // as add_tetrahedron
-    f.e0 += carrier.e0;
-    f.e1 += carrier.e1;
-    f.e2 += carrier.e2;
-    f.e3 += carrier.e3;
+    f += carrier;
     b = c;
   }
   if (k == 3)
