@@ -4,14 +4,18 @@
 #pragma once
 
 #include <cstdint>
+#include <type_traits>
 
 namespace pgamesh::clifford {
 
 using BladeMask = std::uint32_t;
 
 // Grade of a basis blade = number of its factors. Counted with shifts and masks: without
-// -mpopcnt, std::popcount is a library call, too slow for the inner loops of the products.
+// -mpopcnt, std::popcount is a library call, too slow for the inner loops of the products. The
+// compile-time product tables (graded, pgad) call it and odd_parity some 10^5 times per table, and
+// the compiler's constant evaluator pays for every operation: there the builtin, one step, is used.
 constexpr int grade_of(BladeMask m) {
+  if (std::is_constant_evaluated()) return __builtin_popcount(m);
   m = m - ((m >> 1) & 0x55555555u);
   m = (m & 0x33333333u) + ((m >> 2) & 0x33333333u);
   m = (m + (m >> 4)) & 0x0f0f0f0fu;
@@ -32,6 +36,7 @@ constexpr BladeMask parity_above(BladeMask a) {
 
 // Parity of the number of set bits, by folding (see grade_of on std::popcount).
 constexpr bool odd_parity(BladeMask x) {
+  if (std::is_constant_evaluated()) return __builtin_parity(x) != 0;
   x ^= x >> 16;
   x ^= x >> 8;
   x ^= x >> 4;

@@ -86,48 +86,59 @@ struct ProductTable {
   static constexpr const auto& xs = blade_list<A::n, GA>;
   static constexpr const auto& ys = blade_list<A::n, GB>;
 
-  static constexpr bool kept(BladeMask a, BladeMask b) {
-    return pair_factor<A, K>(a, b) != 0 &&
-           (Keep >> clifford::grade_of(pair_blade<K>(a, b)) & 1u) != 0;
-  }
+  // Each blade pair's sign (0 when the pair does not contribute or lands outside Keep) and the
+  // blade it lands on, evaluated once: the compiler's constant evaluator is slow (about half a
+  // microsecond per operation), and the passes below read this instead of recomputing the signs.
+  struct Pair {
+    std::int8_t sign;
+    BladeMask blade;
+  };
+  static constexpr auto pairs = [] {
+    std::array<Pair, xs.size() * ys.size()> out{};
+    std::size_t n = 0;
+    for (BladeMask a : xs)
+      for (BladeMask b : ys) {
+        const double f = pair_factor<A, K>(a, b);
+        const BladeMask blade = pair_blade<K>(a, b);
+        const bool keep = f != 0 && (Keep >> clifford::grade_of(blade) & 1u) != 0;
+        out[n++] = Pair{static_cast<std::int8_t>(!keep ? 0 : (f < 0 ? -1 : 1)), blade};
+      }
+    return out;
+  }();
 
   // Grades reached by the non-vanishing terms.
   static constexpr GradeMask result = [] {
     GradeMask g = 0;
-    for (BladeMask a : xs)
-      for (BladeMask b : ys)
-        if (kept(a, b)) g |= GradeMask{1} << clifford::grade_of(pair_blade<K>(a, b));
+    for (const Pair& p : pairs)
+      if (p.sign != 0) g |= GradeMask{1} << clifford::grade_of(p.blade);
     return g;
   }();
 
   static constexpr std::size_t count = [] {
     std::size_t n = 0;
-    for (BladeMask a : xs)
-      for (BladeMask b : ys)
-        if (kept(a, b)) ++n;
+    for (const Pair& p : pairs)
+      if (p.sign != 0) ++n;
     return n;
   }();
 
-  // Terms grouped by output blade (a counting sort on k), the first of each group marked.
+  // Terms grouped by output blade (a counting sort on k), the first of each group marked; within a
+  // group in the order of (i, j), which fixes the order of the sums.
   static constexpr auto terms = [] {
     std::array<Term, count> out{};
     constexpr std::size_t outputs = blade_list<A::n, result>.size();
     std::array<std::size_t, outputs + 1> start{};
-    for (BladeMask a : xs)
-      for (BladeMask b : ys)
-        if (kept(a, b))
-          ++start[static_cast<std::size_t>(blade_position<A::n, result>[pair_blade<K>(a, b)]) + 1];
+    for (const Pair& p : pairs)
+      if (p.sign != 0) ++start[static_cast<std::size_t>(blade_position<A::n, result>[p.blade]) + 1];
     for (std::size_t k = 0; k < outputs; ++k) start[k + 1] += start[k];
     std::array<std::size_t, outputs + 1> next = start;
     for (std::size_t i = 0; i < xs.size(); ++i)
       for (std::size_t j = 0; j < ys.size(); ++j) {
-        if (!kept(xs[i], ys[j])) continue;
-        const auto k =
-            static_cast<std::size_t>(blade_position<A::n, result>[pair_blade<K>(xs[i], ys[j])]);
+        const Pair& p = pairs[i * ys.size() + j];
+        if (p.sign == 0) continue;
+        const auto k = static_cast<std::size_t>(blade_position<A::n, result>[p.blade]);
         const bool first = next[k] == start[k];
-        out[next[k]++] =
-            Term{static_cast<std::uint16_t>(i), static_cast<std::uint16_t>(j),
-                 static_cast<std::uint16_t>(k), pair_factor<A, K>(xs[i], ys[j]) < 0, first};
+        out[next[k]++] = Term{static_cast<std::uint16_t>(i), static_cast<std::uint16_t>(j),
+                              static_cast<std::uint16_t>(k), p.sign < 0, first};
       }
     return out;
   }();
