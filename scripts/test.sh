@@ -31,8 +31,8 @@ cmake --build --preset release -j "$jobs" --target pgamesh_cli pgamesh_serve pga
 
 # The sanitize build needs nothing of the release build, and the three stages after it mostly wait
 # (on the consumer project's configure, on Chromium, on the server's deadlines; together about
-# 40 s of CPU in 100 s): it runs beside them in its own process group, one step lower in priority
-# so that their timings are not stretched, its output kept for the stage that waits for it.
+# 40 s of CPU in 100 s): it runs beside them in its own process group, at a lower priority so that
+# their timed tests are not stretched, its output kept for the stage that waits for it.
 cmake --preset sanitize > /dev/null
 sanitize_log=build/sanitize-build.log
 setsid nice -n 10 cmake --build --preset sanitize -j "$jobs" > "$sanitize_log" 2>&1 &
