@@ -82,43 +82,60 @@ inline Motor<T> geometric_product_simd(const Motor<T>& a, const Motor<T>& b) {
   return out;
 }
 
-/// The Hamilton product of quaternions held as lanes (w, x, y, z), summed lane-uniformly:
-/// a_w b + a_x (−b_x, b_w, −b_z, b_y) + a_y (−b_y, b_z, b_w, −b_x) + a_z (−b_z, −b_y, b_x, b_w),
-/// left to right. Another summation order than Quat's operator* (quaternion.hpp), so the last
-/// bits may differ from it; used where no bits are promised (float, below).
+/// Flips the sign bit of each lane of v where `signs` holds −0 (+0: unchanged): an exact
+/// negation by one bitwise operation. (By reference: a function returning four doubles by value
+/// would have an ABI that depends on AVX.)
 template <class T>
-[[gnu::always_inline]] inline void hamilton_lanes(const V4<T>& a, const V4<T>& b, V4<T>& out) {
-  const V4<T> b1 = PGAMESH_LANES(b, 1, 0, 3, 2) * V4<T>{T(-1), T(1), T(-1), T(1)};
-  const V4<T> b2 = PGAMESH_LANES(b, 2, 3, 0, 1) * V4<T>{T(-1), T(1), T(1), T(-1)};
-  const V4<T> b3 = PGAMESH_LANES(b, 3, 2, 1, 0) * V4<T>{T(-1), T(-1), T(1), T(1)};
-  out = ((PGAMESH_LANES(a, 0, 0, 0, 0) * b + PGAMESH_LANES(a, 1, 1, 1, 1) * b1) +
-         PGAMESH_LANES(a, 2, 2, 2, 2) * b2) +
-        PGAMESH_LANES(a, 3, 3, 3, 3) * b3;
+[[gnu::always_inline]] inline void flip_signs(V4<T>& v, const V4<T>& signs) {
+  using Bits [[gnu::vector_size(sizeof(V4<T>))]] =
+      std::conditional_t<sizeof(T) == 4, unsigned int, unsigned long long>;
+  v = reinterpret_cast<V4<T>>(reinterpret_cast<Bits>(v) ^ reinterpret_cast<Bits>(signs));
 }
 
-/// The motor product with lane-uniform sums, as klein sums it: q_a q_b and q_a c_b + c_a q_b
-/// with q = (s, −e23, −e31, −e12) and c = (e0123, e01, e02, e03) in four lanes each. Fewer
-/// shuffles than geometric_product_simd, other rounding than geometric_product_generic (a few
-/// ulps); float only — double keeps the generic summation order, whose bits the mesh results
-/// depend on (docs/pga3.md "Speed").
+/// The motor product with lane-uniform sums, as klein sums it. With A = (s, e23, e31, e12) and
+/// C = (e0123, e01, e02, e03) in four lanes each, q = (A_0, −A_1, −A_2, −A_3) and c = C, each of
+/// the Hamilton products q_a q_b, q_a c_b and c_a q_b is x_0 y + x_1 y1 + x_2 y2 + x_3 y3, summed
+/// left to right, where y1, y2, y3 are y's lanes in the orders (1, 0, 3, 2), (2, 3, 0, 1),
+/// (3, 2, 1, 0) with signs. Every sign (the Hamilton product's, q's, and the output's
+/// (e23, e31, e12) = −vec(q_a q_b)) is folded into one pattern per term and applied by
+/// flip_signs, as klein folds them into its shuffles. Other rounding than
+/// geometric_product_generic (a few ulps); float only — double keeps the generic summation order,
+/// whose bits the mesh results depend on (docs/pga3.md "Speed").
 template <class T>
 inline Motor<T> geometric_product_lanes(const Motor<T>& a, const Motor<T>& b) {
   V4<T> alo, ahi, blo, bhi;  // (s, e01, e02, e03), (e12, e31, e23, e0123)
   load_lanes<T>(a, 0, alo), load_lanes<T>(a, 4, ahi), load_lanes<T>(b, 0, blo);
   load_lanes<T>(b, 4, bhi);
-  const V4<T> flip = {T(1), T(-1), T(-1), T(-1)};
-  const V4<T> qa = PGAMESH_LANES2(alo, ahi, 0, 6, 5, 4) * flip;
-  const V4<T> qb = PGAMESH_LANES2(blo, bhi, 0, 6, 5, 4) * flip;
-  const V4<T> ca = PGAMESH_LANES2(alo, ahi, 7, 1, 2, 3), cb = PGAMESH_LANES2(blo, bhi, 7, 1, 2, 3);
-  V4<T> q, x, y;
-  hamilton_lanes<T>(qa, qb, q);
-  hamilton_lanes<T>(qa, cb, x);
-  hamilton_lanes<T>(ca, qb, y);
-  const V4<T> c = x + y;
-  const V4<T> qf = q * flip;  // (s, e23, e31, e12)
+  constexpr T P = T(0), N = -T(0);  // keep, flip
+  // b's A = (s, e23, e31, e12) and C = (e0123, e01, e02, e03) (two-register shuffles, once), then
+  // in the orders of the four terms, (0, 1, 2, 3), (1, 0, 3, 2), (2, 3, 0, 1), (3, 2, 1, 0).
+  const V4<T> bA0 = PGAMESH_LANES2(blo, bhi, 0, 6, 5, 4),
+              bC0 = PGAMESH_LANES2(blo, bhi, 7, 1, 2, 3);
+  const V4<T> bA1 = PGAMESH_LANES(bA0, 1, 0, 3, 2), bC1 = PGAMESH_LANES(bC0, 1, 0, 3, 2);
+  const V4<T> bA2 = PGAMESH_LANES(bA0, 2, 3, 0, 1), bC2 = PGAMESH_LANES(bC0, 2, 3, 0, 1);
+  const V4<T> bA3 = PGAMESH_LANES(bA0, 3, 2, 1, 0), bC3 = PGAMESH_LANES(bC0, 3, 2, 1, 0);
+  // a's coefficients, each in every lane: A_0 … A_3 and C_0 … C_3.
+  const V4<T> aA0 = PGAMESH_LANES(alo, 0, 0, 0, 0), aA1 = PGAMESH_LANES(ahi, 2, 2, 2, 2);
+  const V4<T> aA2 = PGAMESH_LANES(ahi, 1, 1, 1, 1), aA3 = PGAMESH_LANES(ahi, 0, 0, 0, 0);
+  const V4<T> aC0 = PGAMESH_LANES(ahi, 3, 3, 3, 3), aC1 = PGAMESH_LANES(alo, 1, 1, 1, 1);
+  const V4<T> aC2 = PGAMESH_LANES(alo, 2, 2, 2, 2), aC3 = PGAMESH_LANES(alo, 3, 3, 3, 3);
+  // (s, e23, e31, e12) of q_a q_b: the output's signs already folded in.
+  // The signed b lanes of each term: q_a q_b (output signs folded in), q_a c_b, c_a q_b.
+  V4<T> q1 = bA1, q2 = bA2, q3 = bA3, x1 = bC1, x2 = bC2, x3 = bC3;
+  V4<T> y0 = bA0, y1 = bA1, y2 = bA2, y3 = bA3;
+  flip_signs<T>(q1, V4<T>{N, P, P, N}), flip_signs<T>(q2, V4<T>{N, N, P, P}),
+      flip_signs<T>(q3, V4<T>{N, P, N, P});
+  flip_signs<T>(x1, V4<T>{P, N, P, N}), flip_signs<T>(x2, V4<T>{P, N, N, P}),
+      flip_signs<T>(x3, V4<T>{P, P, N, N});
+  flip_signs<T>(y0, V4<T>{P, N, N, N}), flip_signs<T>(y1, V4<T>{P, P, P, N});
+  flip_signs<T>(y2, V4<T>{P, N, P, P}), flip_signs<T>(y3, V4<T>{P, P, N, P});
+  const V4<T> q = ((aA0 * bA0 + aA1 * q1) + aA2 * q2) + aA3 * q3;  // (s, e23, e31, e12)
+  const V4<T> x = ((aA0 * bC0 + aA1 * x1) + aA2 * x2) + aA3 * x3;  // q_a c_b
+  const V4<T> y = ((aC0 * y0 + aC1 * y1) + aC2 * y2) + aC3 * y3;   // c_a q_b
+  const V4<T> c = x + y;                                           // (e0123, e01, e02, e03)
   Motor<T> out;
-  store_lanes<T>(out, 0, PGAMESH_LANES2(qf, c, 0, 5, 6, 7));
-  store_lanes<T>(out, 4, PGAMESH_LANES2(qf, c, 3, 2, 1, 4));
+  store_lanes<T>(out, 0, PGAMESH_LANES2(q, c, 0, 5, 6, 7));
+  store_lanes<T>(out, 4, PGAMESH_LANES2(q, c, 3, 2, 1, 4));
   return out;
 }
 #endif
