@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "pgamesh/algebra/pga3.hpp"
+#include "pgamesh/algebra/pga3/isa.hpp"
 
 #ifdef PGAMESH_BENCH_KLEIN
 #include <klein/klein.hpp>
@@ -182,6 +183,40 @@ void BM_SandwichPlaneArray(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * kRing);
 }
 
+// The out-of-line double kernels of pga3/isa.hpp (compiled in the library for baseline x86-64 and
+// for AVX2), called for one isa: the cost of the call beside the inlined kernels above.
+template <detail::Isa isa>
+void BM_MotorTimesMotorOutOfLine(benchmark::State& state) {
+  const auto& in = inputs<double>();
+  std::size_t i = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(
+        detail::geometric_product(isa, in.motors[i], in.motors[(i + 1) % kRing]));
+    i = (i + 1) % kRing;
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+template <detail::Isa isa>
+void BM_SandwichPointOutOfLine(benchmark::State& state) {
+  const auto& in = inputs<double>();
+  std::size_t i = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(detail::apply(isa, in.motors[i], in.points[i]));
+    i = (i + 1) % kRing;
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+template <detail::Isa isa>
+void BM_SandwichPlaneOutOfLine(benchmark::State& state) {
+  const auto& in = inputs<double>();
+  std::size_t i = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(detail::apply(isa, in.motors[i], in.planes[i]));
+    i = (i + 1) % kRing;
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
 template <class T>
 void BM_GeneralGeometricProduct(benchmark::State& state) {
   const auto& in = inputs<T>();
@@ -223,6 +258,12 @@ BENCHMARK(BM_SandwichPointArray<double>);
 BENCHMARK(BM_SandwichPointArray<float>);
 BENCHMARK(BM_SandwichPlaneArray<double>);
 BENCHMARK(BM_SandwichPlaneArray<float>);
+BENCHMARK(BM_MotorTimesMotorOutOfLine<detail::Isa::baseline>);
+BENCHMARK(BM_MotorTimesMotorOutOfLine<detail::Isa::avx2>);
+BENCHMARK(BM_SandwichPointOutOfLine<detail::Isa::baseline>);
+BENCHMARK(BM_SandwichPointOutOfLine<detail::Isa::avx2>);
+BENCHMARK(BM_SandwichPlaneOutOfLine<detail::Isa::baseline>);
+BENCHMARK(BM_SandwichPlaneOutOfLine<detail::Isa::avx2>);
 BENCHMARK(BM_GeneralGeometricProduct<double>);
 BENCHMARK(BM_GeneralSandwichPoint<double>);
 

@@ -7,6 +7,7 @@
 #include <type_traits>
 
 #include "pgamesh/algebra/pga3/grades.hpp"
+#include "pgamesh/algebra/pga3/isa.hpp"
 #include "pgamesh/algebra/pga3/quaternion.hpp"
 #include "pgamesh/algebra/pga3/simd.hpp"
 
@@ -40,39 +41,40 @@ constexpr Motor<T> geometric_product_generic(const Motor<T>& a, const Motor<T>& 
 }
 
 #ifdef PGAMESH_PGA3_SIMD
-/// geometric_product_generic on four-lane vectors, with every coefficient summed in the same
-/// order (the same bits, up to the sign of a zero): with B = (e23, e31, e12) = −q_v and m = (e01,
-/// e02, e03) = c_v, the three quaternion products' vector parts are lane-wise
-///   q_a q_b → −(a_w B_b + b_w B_a) − (B_a,k B_b,j − B_a,j B_b,k)   (i, j, k cyclic),
-///   q_a c_b → (a_w m_b − b_p B_a) + (B_a,k m_b,j − B_a,j m_b,k),
-///   c_a q_b → (b_w m_a − a_p B_b) + (m_a,k B_b,j − m_a,j B_b,k),
-/// and their scalar parts share one vector (a_w b_w, a_w b_p, a_p b_w) ∓ the three dot products.
-/// Negations are exact, so moving them changes no bit but the sign of a zero sum.
+/// geometric_product_generic on four-lane vectors, bit for bit (zeros' signs included): each lane
+/// does the generic formula's operations in its order, on the same negated inputs. With
+/// Q = q_v = −(e23, e31, e12) and m = c_v = (e01, e02, e03), lane i of the vector parts is
+///   q_a q_b → (a_w Q_b + b_w Q_a) + (Q_a,j Q_b,k − Q_a,k Q_b,j)   (i, j, k cyclic),
+///   q_a c_b → (a_w m_b + b_p Q_a) + (Q_a,j m_b,k − Q_a,k m_b,j),
+///   c_a q_b → (a_p Q_b + b_w m_a) + (m_a,j Q_b,k − m_a,k Q_b,j),
+/// and the three scalar parts share one vector (a_w b_w, a_w b_p, a_p b_w) − the three dot
+/// products ((x + y) + z each).
 template <class T>
 inline Motor<T> geometric_product_simd(const Motor<T>& a, const Motor<T>& b) {
   V4<T> alo, ahi, blo, bhi;  // (s, e01, e02, e03) and (e12, e31, e23, e0123)
   load_lanes<T>(a, 0, alo), load_lanes<T>(a, 4, ahi), load_lanes<T>(b, 0, blo);
   load_lanes<T>(b, 4, bhi);
-  const V4<T> aB = PGAMESH_LANES(ahi, 2, 1, 0, 3), bB = PGAMESH_LANES(bhi, 2, 1, 0, 3);
+  const V4<T> aQ = -PGAMESH_LANES(ahi, 2, 1, 0, 3), bQ = -PGAMESH_LANES(bhi, 2, 1, 0, 3);
   const V4<T> am = PGAMESH_LANES(alo, 1, 2, 3, 0), bm = PGAMESH_LANES(blo, 1, 2, 3, 0);
   const V4<T> aw = PGAMESH_LANES(alo, 0, 0, 0, 0), bw = PGAMESH_LANES(blo, 0, 0, 0, 0);
   const V4<T> ap = PGAMESH_LANES(ahi, 3, 3, 3, 3), bp = PGAMESH_LANES(bhi, 3, 3, 3, 3);
   // (x, y, z) → (y, z, x) and (z, x, y): the j and k of lane i.
-  const V4<T> aBj = PGAMESH_LANES(aB, 1, 2, 0, 3), aBk = PGAMESH_LANES(aB, 2, 0, 1, 3);
-  const V4<T> bBj = PGAMESH_LANES(bB, 1, 2, 0, 3), bBk = PGAMESH_LANES(bB, 2, 0, 1, 3);
+  const V4<T> aQj = PGAMESH_LANES(aQ, 1, 2, 0, 3), aQk = PGAMESH_LANES(aQ, 2, 0, 1, 3);
+  const V4<T> bQj = PGAMESH_LANES(bQ, 1, 2, 0, 3), bQk = PGAMESH_LANES(bQ, 2, 0, 1, 3);
   const V4<T> bmj = PGAMESH_LANES(bm, 1, 2, 0, 3), bmk = PGAMESH_LANES(bm, 2, 0, 1, 3);
   const V4<T> amj = PGAMESH_LANES(am, 1, 2, 0, 3), amk = PGAMESH_LANES(am, 2, 0, 1, 3);
-  const V4<T> e = (aw * bB + bw * aB) + (aBk * bBj - aBj * bBk);  // (e23, e31, e12)
-  const V4<T> x = (aw * bm - bp * aB) + (aBk * bmj - aBj * bmk);
-  const V4<T> y = (bw * am - ap * bB) + (amk * bBj - amj * bBk);
+  const V4<T> qv = (aw * bQ + bw * aQ) + (aQj * bQk - aQk * bQj);
+  const V4<T> x = (aw * bm + bp * aQ) + (aQj * bmk - aQk * bmj);
+  const V4<T> y = (ap * bQ + bw * am) + (amj * bQk - amk * bQj);
   const V4<T> m = x + y;  // (e01, e02, e03)
-  // Scalar parts: lanes (q_a q_b, q_a c_b, c_a q_b) of (a_w, a_w, a_p)(b_w, b_p, b_w) ∓ dots.
-  const V4<T> p1 = aB * bB, p2 = aB * bm, p3 = am * bB;
+  const V4<T> e = -qv;    // (e23, e31, e12)
+  // Scalar parts: lanes (q_a q_b, q_a c_b, c_a q_b) of (a_w, a_w, a_p)(b_w, b_p, b_w) − dots.
+  const V4<T> p1 = aQ * bQ, p2 = aQ * bm, p3 = am * bQ;
   const V4<T> u = PGAMESH_LANES2(p1, p2, 0, 4, 1, 5), z = PGAMESH_LANES2(p1, p2, 2, 6, 2, 6);
   const V4<T> tx = PGAMESH_LANES2(u, p3, 0, 1, 4, 4), ty = PGAMESH_LANES2(u, p3, 2, 3, 5, 5);
   const V4<T> tz = PGAMESH_LANES2(z, p3, 0, 1, 6, 6);
-  const V4<T> w = PGAMESH_LANES2(alo, ahi, 0, 0, 7, 7) * PGAMESH_LANES2(blo, bhi, 0, 7, 0, 0) +
-                  ((tx + ty) + tz) * V4<T>{T(-1), T(1), T(1), T(1)};
+  const V4<T> w = PGAMESH_LANES2(alo, ahi, 0, 0, 7, 7) * PGAMESH_LANES2(blo, bhi, 0, 7, 0, 0) -
+                  ((tx + ty) + tz);
   const V4<T> pseudo = PGAMESH_LANES(w, 1, 1, 1, 1) + PGAMESH_LANES(w, 2, 2, 2, 2);
   Motor<T> out;
   store_lanes<T>(out, 0, PGAMESH_LANES2(w, m, 0, 4, 5, 6));
@@ -80,43 +82,60 @@ inline Motor<T> geometric_product_simd(const Motor<T>& a, const Motor<T>& b) {
   return out;
 }
 
-/// The Hamilton product of quaternions held as lanes (w, x, y, z), summed lane-uniformly:
-/// a_w b + a_x (−b_x, b_w, −b_z, b_y) + a_y (−b_y, b_z, b_w, −b_x) + a_z (−b_z, −b_y, b_x, b_w),
-/// left to right. Another summation order than Quat's operator* (quaternion.hpp), so the last
-/// bits may differ from it; used where no bits are promised (float, below).
+/// Flips the sign bit of each lane of v where `signs` holds −0 (+0: unchanged): an exact
+/// negation by one bitwise operation. (By reference: a function returning four doubles by value
+/// would have an ABI that depends on AVX.)
 template <class T>
-[[gnu::always_inline]] inline void hamilton_lanes(const V4<T>& a, const V4<T>& b, V4<T>& out) {
-  const V4<T> b1 = PGAMESH_LANES(b, 1, 0, 3, 2) * V4<T>{T(-1), T(1), T(-1), T(1)};
-  const V4<T> b2 = PGAMESH_LANES(b, 2, 3, 0, 1) * V4<T>{T(-1), T(1), T(1), T(-1)};
-  const V4<T> b3 = PGAMESH_LANES(b, 3, 2, 1, 0) * V4<T>{T(-1), T(-1), T(1), T(1)};
-  out = ((PGAMESH_LANES(a, 0, 0, 0, 0) * b + PGAMESH_LANES(a, 1, 1, 1, 1) * b1) +
-         PGAMESH_LANES(a, 2, 2, 2, 2) * b2) +
-        PGAMESH_LANES(a, 3, 3, 3, 3) * b3;
+[[gnu::always_inline]] inline void flip_signs(V4<T>& v, const V4<T>& signs) {
+  using Bits [[gnu::vector_size(sizeof(V4<T>))]] =
+      std::conditional_t<sizeof(T) == 4, unsigned int, unsigned long long>;
+  v = reinterpret_cast<V4<T>>(reinterpret_cast<Bits>(v) ^ reinterpret_cast<Bits>(signs));
 }
 
-/// The motor product with lane-uniform sums, as klein sums it: q_a q_b and q_a c_b + c_a q_b
-/// with q = (s, −e23, −e31, −e12) and c = (e0123, e01, e02, e03) in four lanes each. Fewer
-/// shuffles than geometric_product_simd, other rounding than geometric_product_generic (a few
-/// ulps); float only — double keeps the generic summation order, whose bits the mesh results
-/// depend on (docs/pga3.md "Speed").
+/// The motor product with lane-uniform sums, as klein sums it. With A = (s, e23, e31, e12) and
+/// C = (e0123, e01, e02, e03) in four lanes each, q = (A_0, −A_1, −A_2, −A_3) and c = C, each of
+/// the Hamilton products q_a q_b, q_a c_b and c_a q_b is x_0 y + x_1 y1 + x_2 y2 + x_3 y3, summed
+/// left to right, where y1, y2, y3 are y's lanes in the orders (1, 0, 3, 2), (2, 3, 0, 1),
+/// (3, 2, 1, 0) with signs. Every sign (the Hamilton product's, q's, and the output's
+/// (e23, e31, e12) = −vec(q_a q_b)) is folded into one pattern per term and applied by
+/// flip_signs, as klein folds them into its shuffles. Other rounding than
+/// geometric_product_generic (a few ulps); float only — double keeps the generic summation order,
+/// whose bits the mesh results depend on (docs/pga3.md "Speed").
 template <class T>
 inline Motor<T> geometric_product_lanes(const Motor<T>& a, const Motor<T>& b) {
   V4<T> alo, ahi, blo, bhi;  // (s, e01, e02, e03), (e12, e31, e23, e0123)
   load_lanes<T>(a, 0, alo), load_lanes<T>(a, 4, ahi), load_lanes<T>(b, 0, blo);
   load_lanes<T>(b, 4, bhi);
-  const V4<T> flip = {T(1), T(-1), T(-1), T(-1)};
-  const V4<T> qa = PGAMESH_LANES2(alo, ahi, 0, 6, 5, 4) * flip;
-  const V4<T> qb = PGAMESH_LANES2(blo, bhi, 0, 6, 5, 4) * flip;
-  const V4<T> ca = PGAMESH_LANES2(alo, ahi, 7, 1, 2, 3), cb = PGAMESH_LANES2(blo, bhi, 7, 1, 2, 3);
-  V4<T> q, x, y;
-  hamilton_lanes<T>(qa, qb, q);
-  hamilton_lanes<T>(qa, cb, x);
-  hamilton_lanes<T>(ca, qb, y);
-  const V4<T> c = x + y;
-  const V4<T> qf = q * flip;  // (s, e23, e31, e12)
+  constexpr T P = T(0), N = -T(0);  // keep, flip
+  // b's A = (s, e23, e31, e12) and C = (e0123, e01, e02, e03) (two-register shuffles, once), then
+  // in the orders of the four terms, (0, 1, 2, 3), (1, 0, 3, 2), (2, 3, 0, 1), (3, 2, 1, 0).
+  const V4<T> bA0 = PGAMESH_LANES2(blo, bhi, 0, 6, 5, 4),
+              bC0 = PGAMESH_LANES2(blo, bhi, 7, 1, 2, 3);
+  const V4<T> bA1 = PGAMESH_LANES(bA0, 1, 0, 3, 2), bC1 = PGAMESH_LANES(bC0, 1, 0, 3, 2);
+  const V4<T> bA2 = PGAMESH_LANES(bA0, 2, 3, 0, 1), bC2 = PGAMESH_LANES(bC0, 2, 3, 0, 1);
+  const V4<T> bA3 = PGAMESH_LANES(bA0, 3, 2, 1, 0), bC3 = PGAMESH_LANES(bC0, 3, 2, 1, 0);
+  // a's coefficients, each in every lane: A_0 … A_3 and C_0 … C_3.
+  const V4<T> aA0 = PGAMESH_LANES(alo, 0, 0, 0, 0), aA1 = PGAMESH_LANES(ahi, 2, 2, 2, 2);
+  const V4<T> aA2 = PGAMESH_LANES(ahi, 1, 1, 1, 1), aA3 = PGAMESH_LANES(ahi, 0, 0, 0, 0);
+  const V4<T> aC0 = PGAMESH_LANES(ahi, 3, 3, 3, 3), aC1 = PGAMESH_LANES(alo, 1, 1, 1, 1);
+  const V4<T> aC2 = PGAMESH_LANES(alo, 2, 2, 2, 2), aC3 = PGAMESH_LANES(alo, 3, 3, 3, 3);
+  // (s, e23, e31, e12) of q_a q_b: the output's signs already folded in.
+  // The signed b lanes of each term: q_a q_b (output signs folded in), q_a c_b, c_a q_b.
+  V4<T> q1 = bA1, q2 = bA2, q3 = bA3, x1 = bC1, x2 = bC2, x3 = bC3;
+  V4<T> y0 = bA0, y1 = bA1, y2 = bA2, y3 = bA3;
+  flip_signs<T>(q1, V4<T>{N, P, P, N}), flip_signs<T>(q2, V4<T>{N, N, P, P}),
+      flip_signs<T>(q3, V4<T>{N, P, N, P});
+  flip_signs<T>(x1, V4<T>{P, N, P, N}), flip_signs<T>(x2, V4<T>{P, N, N, P}),
+      flip_signs<T>(x3, V4<T>{P, P, N, N});
+  flip_signs<T>(y0, V4<T>{P, N, N, N}), flip_signs<T>(y1, V4<T>{P, P, P, N});
+  flip_signs<T>(y2, V4<T>{P, N, P, P}), flip_signs<T>(y3, V4<T>{P, P, N, P});
+  const V4<T> q = ((aA0 * bA0 + aA1 * q1) + aA2 * q2) + aA3 * q3;  // (s, e23, e31, e12)
+  const V4<T> x = ((aA0 * bC0 + aA1 * x1) + aA2 * x2) + aA3 * x3;  // q_a c_b
+  const V4<T> y = ((aC0 * y0 + aC1 * y1) + aC2 * y2) + aC3 * y3;   // c_a q_b
+  const V4<T> c = x + y;                                           // (e0123, e01, e02, e03)
   Motor<T> out;
-  store_lanes<T>(out, 0, PGAMESH_LANES2(qf, c, 0, 5, 6, 7));
-  store_lanes<T>(out, 4, PGAMESH_LANES2(qf, c, 3, 2, 1, 4));
+  store_lanes<T>(out, 0, PGAMESH_LANES2(q, c, 0, 5, 6, 7));
+  store_lanes<T>(out, 4, PGAMESH_LANES2(q, c, 3, 2, 1, 4));
   return out;
 }
 #endif
@@ -135,6 +154,8 @@ constexpr Motor<T> geometric_product(const Motor<T>& a, const Motor<T>& b) {
     if (!std::is_constant_evaluated()) return detail::geometric_product_simd(a, b);
   }
 #endif
+  if constexpr (std::is_same_v<T, double> && detail::kDoubleOutOfLine)
+    if (!std::is_constant_evaluated()) return detail::geometric_product(detail::Isa::avx2, a, b);
   return detail::geometric_product_generic(a, b);
 }
 /// A * B = geometric_product(A, B): the motion B followed by A.
@@ -226,30 +247,31 @@ constexpr Plane<T> apply_generic(const Motor<T>& m, const Plane<T>& p) {
 }
 
 #ifdef PGAMESH_PGA3_SIMD
-/// apply_generic for points on four-lane vectors (x, y, z, ·), summed in the same order (same
-/// bits). With B = (e23, e31, e12) = −q_v, m = c_v: t = −2 ((c_w B + q_w m) + m × B) and
-/// q P q* = ((s P + 2 (B·P) B) − 2 q_w (B × P)), s = q_w² − B·B.
+/// apply_generic for points on four-lane vectors (x, y, z, ·), bit for bit (zeros' signs
+/// included): each lane does the generic formula's operations in its order. With Q = q_v =
+/// −(e23, e31, e12) and m = c_v: t = 2 ((c_w Q − q_w m) + m × Q) and
+/// q P q* = ((s P + 2 (Q·P) Q) + 2 q_w (Q × P)), s = q_w² − Q·Q.
 template <class T>
 inline Point<T> apply_simd(const Motor<T>& mo, const Point<T>& x) {
   V4<T> lo, hi, pt;  // (s, e01, e02, e03), (e12, e31, e23, e0123), (e021, e013, e032, e123)
   load_lanes<T>(mo, 0, lo), load_lanes<T>(mo, 4, hi), load_lanes<T>(x, 0, pt);
-  const V4<T> b = PGAMESH_LANES(hi, 2, 1, 0, 3), m = PGAMESH_LANES(lo, 1, 2, 3, 0);
+  const V4<T> q = -PGAMESH_LANES(hi, 2, 1, 0, 3), m = PGAMESH_LANES(lo, 1, 2, 3, 0);
   const V4<T> p = PGAMESH_LANES(pt, 2, 1, 0, 3), w = PGAMESH_LANES(pt, 3, 3, 3, 3);
   const V4<T> qw = PGAMESH_LANES(lo, 0, 0, 0, 0), cw = PGAMESH_LANES(hi, 3, 3, 3, 3);
-  const V4<T> bj = PGAMESH_LANES(b, 1, 2, 0, 3), bk = PGAMESH_LANES(b, 2, 0, 1, 3);
+  const V4<T> qj = PGAMESH_LANES(q, 1, 2, 0, 3), qk = PGAMESH_LANES(q, 2, 0, 1, 3);
   const V4<T> mj = PGAMESH_LANES(m, 1, 2, 0, 3), mk = PGAMESH_LANES(m, 2, 0, 1, 3);
   const V4<T> pj = PGAMESH_LANES(p, 1, 2, 0, 3), pk = PGAMESH_LANES(p, 2, 0, 1, 3);
-  // Lanes (B·B, B·P, B·B, B·P), each summed (x + y) + z.
-  const V4<T> bb = b * b, bp = b * p;
-  const V4<T> dots = (PGAMESH_LANES2(bb, bp, 0, 4, 0, 4) + PGAMESH_LANES2(bb, bp, 1, 5, 1, 5)) +
-                     PGAMESH_LANES2(bb, bp, 2, 6, 2, 6);
+  // Lanes (Q·Q, Q·P, Q·Q, Q·P), each summed (x + y) + z.
+  const V4<T> qq = q * q, qp = q * p;
+  const V4<T> dots = (PGAMESH_LANES2(qq, qp, 0, 4, 0, 4) + PGAMESH_LANES2(qq, qp, 1, 5, 1, 5)) +
+                     PGAMESH_LANES2(qq, qp, 2, 6, 2, 6);
   const V4<T> qw2 = qw * qw;
   const V4<T> s = qw2 - PGAMESH_LANES(dots, 0, 0, 0, 0);
   const V4<T> two = {T(2), T(2), T(2), T(2)};
-  const V4<T> t2 = two * ((cw * b + qw * m) + (mj * bk - mk * bj));  // −t
+  const V4<T> t = two * ((cw * q - qw * m) + (mj * qk - mk * qj));
   const V4<T> r =
-      ((s * p + (two * PGAMESH_LANES(dots, 1, 1, 1, 1)) * b) - (two * qw) * (bj * pk - bk * pj)) -
-      w * t2;
+      ((s * p + (two * PGAMESH_LANES(dots, 1, 1, 1, 1)) * q) + (two * qw) * (qj * pk - qk * pj)) +
+      w * t;
   const V4<T> weight = (qw2 + dots) * w;  // lane 0: |q|² w
   Point<T> out;
   store_lanes<T>(out, 0, PGAMESH_LANES2(r, weight, 2, 1, 0, 4));
@@ -303,6 +325,8 @@ constexpr Point<T> apply(const Motor<T>& m, const Point<T>& x) {
   if constexpr (detail::kHasSimd<T>)
     if (!std::is_constant_evaluated()) return detail::apply_simd(m, x);
 #endif
+  if constexpr (std::is_same_v<T, double> && detail::kDoubleOutOfLine)
+    if (!std::is_constant_evaluated()) return detail::apply(detail::Isa::avx2, m, x);
   return detail::apply_generic(m, x);
 }
 

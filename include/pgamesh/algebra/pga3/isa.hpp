@@ -1,0 +1,56 @@
+// Internal: the double kernels compiled into the algebra library (src/algebra/pga3_kernels.cpp)
+// once for baseline x86-64 (SSE2) and once more for AVX2 (four doubles per register), the variant
+// chosen at run time; on other processors (aarch64) only the plain code is compiled. Plain
+// declarations: the instruction-set attributes stay in the .cpp. Every variant gives the bits of
+// the header formulas it is named after (docs/pga3.md "Speed"); tests/algebra/test_pga3_isa.cpp
+// checks each variant against them.
+#pragma once
+
+#include <cstddef>
+
+#include "pgamesh/algebra/pga3/grades.hpp"
+
+// x86-64 with GCC or clang: an AVX2 variant is compiled beside the baseline one.
+#if (defined(__GNUC__) || defined(__clang__)) && defined(__x86_64__)
+#define PGAMESH_PGA3_AVX2_VARIANT 1
+#endif
+
+namespace pgamesh::pga3::detail {
+
+/// Whether motor.hpp calls the double motor product and point sandwich out of line (below), so
+/// that they run AVX2 where the processor has it: on x86-64 builds without AVX. Builds with AVX
+/// inline the four-lane forms themselves; elsewhere the generic formulas stay inline.
+inline constexpr bool kDoubleOutOfLine =
+#if defined(PGAMESH_PGA3_AVX2_VARIANT) && !defined(__AVX__)
+    true;
+#else
+    false;
+#endif
+
+/// The instruction sets the kernels below are compiled for. A kernel called with `avx2` runs the
+/// AVX2 code when this processor has AVX2 and the baseline code otherwise.
+enum class Isa { baseline, avx2 };
+
+/// Whether the kernels run `isa` itself on this processor (baseline: always; avx2: an x86-64
+/// processor with AVX2, and an OS that saves its registers).
+bool runs(Isa isa) noexcept;
+
+/// transform_points_loop<double> (batch.hpp): (ox, oy, oz)[i] = r (x, y, z, 1)[i], i < n.
+void transform_points(Isa isa, const double (&r)[3][4], const double* x, const double* y,
+                      const double* z, double* ox, double* oy, double* oz, std::size_t n) noexcept;
+/// transform_planes_loop<double> (batch.hpp).
+void transform_planes(Isa isa, const double (&r)[3][4], const double (&u)[4], const double* a,
+                      const double* b, const double* c, const double* d, double* oa, double* ob,
+                      double* oc, double* od, std::size_t n) noexcept;
+
+/// The motor product: geometric_product_generic (motor.hpp) in the baseline variant,
+/// geometric_product_simd (the same bits) in the AVX2 variant.
+Motor<double> geometric_product(Isa isa, const Motor<double>& a, const Motor<double>& b) noexcept;
+/// The point sandwich: apply_generic, or apply_simd (the same bits), of motor.hpp.
+Point<double> apply(Isa isa, const Motor<double>& m, const Point<double>& x) noexcept;
+/// The plane sandwich: apply_generic, or apply_simd (the same values up to the sign of a zero).
+/// Not called by motor.hpp: out of line, the AVX2 variant is no faster than the inlined generic
+/// formula (docs/pga3.md "Speed"); here for the benchmark's side-by-side.
+Plane<double> apply(Isa isa, const Motor<double>& m, const Plane<double>& p) noexcept;
+
+}  // namespace pgamesh::pga3::detail
