@@ -1,5 +1,7 @@
 #include "repair_json.hpp"
 
+#include "pgamesh/io/mesh_format.hpp"
+
 namespace pgamesh::cli {
 
 Json repair_fields(const MeshSource& source, const RepairReport& r, const Analysis& result,

@@ -1,12 +1,11 @@
 #include "io/zip_package.hpp"
 
-#include <zip.h>
-
 #include <algorithm>
 #include <limits>
 #include <stdexcept>
 
 #include "io/text_cursor.hpp"
+#include "io/zip_library.hpp"
 #include "pgamesh/core/input_error.hpp"
 
 namespace pgamesh::detail {
@@ -51,7 +50,7 @@ std::uint64_t ZipBudget::for_archive(std::uint64_t archive_bytes) const {
 struct ZipPackage::Archive {
   zip_t* zip = nullptr;
   ~Archive() {
-    if (zip) zip_discard(zip);
+    if (zip) zip_library().discard(zip);
   }
 };
 
@@ -59,24 +58,25 @@ ZipPackage::ZipPackage(std::span<const char> bytes, const std::string& name, Zip
     : archive_(std::make_unique<Archive>()),
       name_(name),
       budget_(budget.for_archive(bytes.size())) {
+  const ZipLibrary& lib = zip_library();
   zip_error_t error;
-  zip_error_init(&error);
-  zip_source_t* source = zip_source_buffer_create(bytes.data(), bytes.size(), 0, &error);
+  lib.error_init(&error);
+  zip_source_t* source = lib.source_buffer_create(bytes.data(), bytes.size(), 0, &error);
   if (source) {
-    archive_->zip = zip_open_from_source(source, ZIP_RDONLY | ZIP_CHECKCONS, &error);
-    if (!archive_->zip) zip_source_free(source);
+    archive_->zip = lib.open_from_source(source, ZIP_RDONLY | ZIP_CHECKCONS, &error);
+    if (!archive_->zip) lib.source_free(source);
   }
   if (!archive_->zip) {
-    const std::string why = zip_error_strerror(&error);
-    zip_error_fini(&error);
+    const std::string why = lib.error_strerror(&error);
+    lib.error_fini(&error);
     throw InputError(
         name, byte_position(0),
         "not a readable zip archive (3MF is a zip package; truncated or damaged?): " + why);
   }
-  zip_error_fini(&error);
-  const zip_int64_t entries = zip_get_num_entries(archive_->zip, 0);
+  lib.error_fini(&error);
+  const zip_int64_t entries = lib.get_num_entries(archive_->zip, 0);
   for (zip_int64_t i = 0; i < entries; ++i) {
-    const char* entry = zip_get_name(archive_->zip, static_cast<zip_uint64_t>(i), ZIP_FL_ENC_RAW);
+    const char* entry = lib.get_name(archive_->zip, static_cast<zip_uint64_t>(i), ZIP_FL_ENC_RAW);
     if (!entry)
       throw InputError(name, byte_position(0),
                        "zip archive: entry " + std::to_string(i) + " has no readable name");
@@ -90,18 +90,20 @@ ZipPackage::ZipPackage(std::span<const char> bytes, const std::string& name, Zip
 ZipPackage::~ZipPackage() = default;
 
 bool ZipPackage::has(std::string_view part) const {
-  return zip_name_locate(archive_->zip, without_slash(part).c_str(), ZIP_FL_NOCASE) >= 0;
+  const ZipLibrary& lib = zip_library();
+  return lib.name_locate(archive_->zip, without_slash(part).c_str(), ZIP_FL_NOCASE) >= 0;
 }
 
 PartBytes ZipPackage::read(std::string_view part) const {
+  const ZipLibrary& lib = zip_library();
   const std::string entry = without_slash(part);
   const std::string what = "zip entry " + quoted(entry) + ": ";
-  const zip_int64_t index = zip_name_locate(archive_->zip, entry.c_str(), ZIP_FL_NOCASE);
+  const zip_int64_t index = lib.name_locate(archive_->zip, entry.c_str(), ZIP_FL_NOCASE);
   if (index < 0) throw InputError(name_, byte_position(0), what + "missing from the package");
   zip_stat_t st;
-  zip_stat_init(&st);
-  if (zip_stat_index(archive_->zip, static_cast<zip_uint64_t>(index), 0, &st) != 0)
-    throw InputError(name_, byte_position(0), what + zip_strerror(archive_->zip));
+  lib.stat_init(&st);
+  if (lib.stat_index(archive_->zip, static_cast<zip_uint64_t>(index), 0, &st) != 0)
+    throw InputError(name_, byte_position(0), what + lib.strerror(archive_->zip));
   if ((st.valid & ZIP_STAT_ENCRYPTION_METHOD) && st.encryption_method != ZIP_EM_NONE)
     throw InputError(name_, byte_position(0), what + "encrypted (not supported)");
   if (!(st.valid & ZIP_STAT_COMP_METHOD) ||
@@ -115,11 +117,11 @@ PartBytes ZipPackage::read(std::string_view part) const {
                      what + "declares " + std::to_string(declared) +
                          " bytes uncompressed, beyond the limit of " + std::to_string(budget_) +
                          " bytes for this archive (zip bomb?)");
-  zip_file_t* file = zip_fopen_index(archive_->zip, static_cast<zip_uint64_t>(index), 0);
-  if (!file) throw InputError(name_, byte_position(0), what + zip_strerror(archive_->zip));
+  zip_file_t* file = lib.fopen_index(archive_->zip, static_cast<zip_uint64_t>(index), 0);
+  if (!file) throw InputError(name_, byte_position(0), what + lib.strerror(archive_->zip));
   struct Closer {
     zip_file_t* f;
-    ~Closer() { zip_fclose(f); }
+    ~Closer() { zip_library().fclose(f); }
   } closer{file};
   // Inflated in steps into a buffer of the declared size; one byte more than declared is an
   // error at once, so a lying header cannot make us inflate beyond it (and the declared size is
@@ -132,10 +134,10 @@ PartBytes ZipPackage::read(std::string_view part) const {
     const std::uint64_t room = declared - got;
     char* dst = room ? out.begin() + got : &probe;
     const zip_uint64_t step = room ? std::min<std::uint64_t>(room, std::uint64_t{1} << 22) : 1;
-    const zip_int64_t n = zip_fread(file, dst, step);
+    const zip_int64_t n = lib.fread(file, dst, step);
     if (n < 0)
       throw InputError(name_, byte_position(0),
-                       what + "cannot be inflated: " + zip_file_strerror(file) +
+                       what + "cannot be inflated: " + lib.file_strerror(file) +
                            " (truncated or damaged archive?)");
     if (n == 0) break;
     if (!room)
@@ -152,46 +154,47 @@ PartBytes ZipPackage::read(std::string_view part) const {
 }
 
 std::string zip_archive(const std::vector<std::pair<std::string, std::string>>& entries) {
+  const ZipLibrary& lib = zip_library();
   auto failed = [](const char* what, const char* why) {
     return std::runtime_error(std::string("zip archive: ") + what + ": " + why);
   };
   zip_error_t error;
-  zip_error_init(&error);
-  zip_source_t* buffer = zip_source_buffer_create(nullptr, 0, 0, &error);
-  if (!buffer) throw failed("buffer", zip_error_strerror(&error));
-  zip_source_keep(buffer);  // read back after zip_close
+  lib.error_init(&error);
+  zip_source_t* buffer = lib.source_buffer_create(nullptr, 0, 0, &error);
+  if (!buffer) throw failed("buffer", lib.error_strerror(&error));
+  lib.source_keep(buffer);  // read back after zip_close
   struct Release {
     zip_source_t* s;
-    ~Release() { zip_source_free(s); }
+    ~Release() { zip_library().source_free(s); }
   } release{buffer};
-  zip_t* zip = zip_open_from_source(buffer, ZIP_TRUNCATE, &error);
+  zip_t* zip = lib.open_from_source(buffer, ZIP_TRUNCATE, &error);
   if (!zip) {
-    zip_source_free(buffer);  // the reference the archive did not take
-    throw failed("open", zip_error_strerror(&error));
+    lib.source_free(buffer);  // the reference the archive did not take
+    throw failed("open", lib.error_strerror(&error));
   }
   for (const auto& [entry, data] : entries) {
-    zip_source_t* s = zip_source_buffer(zip, data.data(), data.size(), 0);
-    const zip_int64_t index = s ? zip_file_add(zip, entry.c_str(), s, ZIP_FL_ENC_UTF_8) : -1;
+    zip_source_t* s = lib.source_buffer(zip, data.data(), data.size(), 0);
+    const zip_int64_t index = s ? lib.file_add(zip, entry.c_str(), s, ZIP_FL_ENC_UTF_8) : -1;
     if (index < 0) {
-      if (s) zip_source_free(s);
-      const std::string why = zip_strerror(zip);
-      zip_discard(zip);
+      if (s) lib.source_free(s);
+      const std::string why = lib.strerror(zip);
+      lib.discard(zip);
       throw failed(entry.c_str(), why.c_str());
     }
-    zip_set_file_compression(zip, static_cast<zip_uint64_t>(index), ZIP_CM_DEFLATE, 0);
+    lib.set_file_compression(zip, static_cast<zip_uint64_t>(index), ZIP_CM_DEFLATE, 0);
   }
-  if (zip_close(zip) != 0) {
-    const std::string why = zip_strerror(zip);
-    zip_discard(zip);
+  if (lib.close(zip) != 0) {
+    const std::string why = lib.strerror(zip);
+    lib.discard(zip);
     throw failed("close", why.c_str());
   }
   zip_stat_t st;
-  zip_stat_init(&st);
-  if (zip_source_stat(buffer, &st) != 0 || zip_source_open(buffer) != 0)
-    throw failed("read back", zip_error_strerror(zip_source_error(buffer)));
+  lib.stat_init(&st);
+  if (lib.source_stat(buffer, &st) != 0 || lib.source_open(buffer) != 0)
+    throw failed("read back", lib.error_strerror(lib.source_error(buffer)));
   std::string out(static_cast<std::size_t>(st.size), '\0');
-  const zip_int64_t n = zip_source_read(buffer, out.data(), out.size());
-  zip_source_close(buffer);
+  const zip_int64_t n = lib.source_read(buffer, out.data(), out.size());
+  lib.source_close(buffer);
   if (n < 0 || static_cast<std::uint64_t>(n) != st.size) throw failed("read back", "short read");
   return out;
 }
