@@ -32,8 +32,12 @@ git ls-files '*.cpp' '*.hpp' | xargs -r clang-format --dry-run --Werror
 cmake --preset sanitize > /dev/null
 sanitize_log=build/sanitize-build.log
 mkdir -p build
-setsid nice -n 10 cmake --build --preset sanitize -j "$jobs" > "$sanitize_log" 2>&1 &
+# Its own process group (job control, for the trap below) but not its own session: the kernel
+# shares the CPU between sessions first (autogroups), which would undo the nice.
+set -m
+nice -n 10 cmake --build --preset sanitize -j "$jobs" > "$sanitize_log" 2>&1 &
 sanitize_build=$!
+set +m
 sanitize_start=$SECONDS
 trap 'kill -TERM -- "-$sanitize_build" 2> /dev/null || true' EXIT
 
