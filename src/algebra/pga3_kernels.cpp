@@ -11,46 +11,50 @@ namespace pgamesh::pga3::detail {
 
 namespace {
 
+// The attribute of the AVX2 variants: code for AVX2 on x86-64. Elsewhere the variants compile to
+// the plain code and are never called (kRunsAvx2 is false), so each dispatch below is one test.
 #ifdef PGAMESH_PGA3_AVX2_VARIANT
+#define PGAMESH_TARGET_AVX2 gnu::target("avx2")
 bool detect_avx2() noexcept {
   __builtin_cpu_init();  // needed before static initialisation has run libgcc's own
   return __builtin_cpu_supports("avx2");
 }
 // Zero (false, the baseline) until dynamic initialisation has run, so an early call is safe.
 const bool kRunsAvx2 = detect_avx2();
+#else
+#define PGAMESH_TARGET_AVX2
+constexpr bool kRunsAvx2 = false;
+#endif
 
-[[gnu::target("avx2")]] void transform_points_avx2(const double (&r)[3][4], const double* x,
+[[PGAMESH_TARGET_AVX2]] void transform_points_avx2(const double (&r)[3][4], const double* x,
                                                    const double* y, const double* z, double* ox,
                                                    double* oy, double* oz, std::size_t n) {
   transform_points_loop(r, x, y, z, ox, oy, oz, n);
 }
-[[gnu::target("avx2")]] void transform_planes_avx2(const double (&r)[3][4], const double (&u)[4],
+[[PGAMESH_TARGET_AVX2]] void transform_planes_avx2(const double (&r)[3][4], const double (&u)[4],
                                                    const double* a, const double* b,
                                                    const double* c, const double* d, double* oa,
                                                    double* ob, double* oc, double* od,
                                                    std::size_t n) {
   transform_planes_loop(r, u, a, b, c, d, oa, ob, oc, od, n);
 }
-
-[[gnu::target("avx2"), gnu::flatten]] Motor<double> geometric_product_avx2(const Motor<double>& a,
+[[PGAMESH_TARGET_AVX2, gnu::flatten]] Motor<double> geometric_product_avx2(const Motor<double>& a,
                                                                            const Motor<double>& b) {
   return geometric_product_simd(a, b);
 }
-[[gnu::target("avx2"), gnu::flatten]] Point<double> apply_avx2(const Motor<double>& m,
+[[PGAMESH_TARGET_AVX2, gnu::flatten]] Point<double> apply_avx2(const Motor<double>& m,
                                                                const Point<double>& x) {
   return apply_simd(m, x);
 }
-[[gnu::target("avx2"), gnu::flatten]] Plane<double> apply_avx2(const Motor<double>& m,
+[[PGAMESH_TARGET_AVX2, gnu::flatten]] Plane<double> apply_avx2(const Motor<double>& m,
                                                                const Plane<double>& p) {
   return apply_simd(m, p);
 }
+#undef PGAMESH_TARGET_AVX2
 
 bool use_avx2(Isa isa) noexcept {
   return isa == Isa::avx2 && kRunsAvx2;
 }
-#else
-constexpr bool kRunsAvx2 = false;
-#endif
 
 }  // namespace
 
@@ -60,43 +64,23 @@ bool runs(Isa isa) noexcept {
 
 void transform_points(Isa isa, const double (&r)[3][4], const double* x, const double* y,
                       const double* z, double* ox, double* oy, double* oz, std::size_t n) noexcept {
-#ifdef PGAMESH_PGA3_AVX2_VARIANT
   if (use_avx2(isa)) return transform_points_avx2(r, x, y, z, ox, oy, oz, n);
-#endif
-  (void)isa;
   transform_points_loop(r, x, y, z, ox, oy, oz, n);
 }
-
 void transform_planes(Isa isa, const double (&r)[3][4], const double (&u)[4], const double* a,
                       const double* b, const double* c, const double* d, double* oa, double* ob,
                       double* oc, double* od, std::size_t n) noexcept {
-#ifdef PGAMESH_PGA3_AVX2_VARIANT
   if (use_avx2(isa)) return transform_planes_avx2(r, u, a, b, c, d, oa, ob, oc, od, n);
-#endif
-  (void)isa;
   transform_planes_loop(r, u, a, b, c, d, oa, ob, oc, od, n);
 }
-
 Motor<double> geometric_product(Isa isa, const Motor<double>& a, const Motor<double>& b) noexcept {
-#ifdef PGAMESH_PGA3_AVX2_VARIANT
-  if (use_avx2(isa)) return geometric_product_avx2(a, b);
-#endif
-  (void)isa;
-  return geometric_product_generic(a, b);
+  return use_avx2(isa) ? geometric_product_avx2(a, b) : geometric_product_generic(a, b);
 }
 Point<double> apply(Isa isa, const Motor<double>& m, const Point<double>& x) noexcept {
-#ifdef PGAMESH_PGA3_AVX2_VARIANT
-  if (use_avx2(isa)) return apply_avx2(m, x);
-#endif
-  (void)isa;
-  return apply_generic(m, x);
+  return use_avx2(isa) ? apply_avx2(m, x) : apply_generic(m, x);
 }
 Plane<double> apply(Isa isa, const Motor<double>& m, const Plane<double>& p) noexcept {
-#ifdef PGAMESH_PGA3_AVX2_VARIANT
-  if (use_avx2(isa)) return apply_avx2(m, p);
-#endif
-  (void)isa;
-  return apply_generic(m, p);
+  return use_avx2(isa) ? apply_avx2(m, p) : apply_generic(m, p);
 }
 
 }  // namespace pgamesh::pga3::detail

@@ -41,6 +41,13 @@ constexpr Motor<T> geometric_product_generic(const Motor<T>& a, const Motor<T>& 
 }
 
 #ifdef PGAMESH_PGA3_SIMD
+/// A motor's eight coefficients in two four-lane vectors, in its storage order: lo = (s, e01, e02,
+/// e03) and hi = (e12, e31, e23, e0123).
+template <class T>
+[[gnu::always_inline]] inline void load_motor_lanes(const Motor<T>& m, V4<T>& lo, V4<T>& hi) {
+  load_lanes<T>(m, 0, lo), load_lanes<T>(m, 4, hi);
+}
+
 /// geometric_product_generic on four-lane vectors, bit for bit (zeros' signs included): each lane
 /// does the generic formula's operations in its order, on the same negated inputs. With
 /// Q = q_v = −(e23, e31, e12) and m = c_v = (e01, e02, e03), lane i of the vector parts is
@@ -52,8 +59,7 @@ constexpr Motor<T> geometric_product_generic(const Motor<T>& a, const Motor<T>& 
 template <class T>
 inline Motor<T> geometric_product_simd(const Motor<T>& a, const Motor<T>& b) {
   V4<T> alo, ahi, blo, bhi;  // (s, e01, e02, e03) and (e12, e31, e23, e0123)
-  load_lanes<T>(a, 0, alo), load_lanes<T>(a, 4, ahi), load_lanes<T>(b, 0, blo);
-  load_lanes<T>(b, 4, bhi);
+  load_motor_lanes<T>(a, alo, ahi), load_motor_lanes<T>(b, blo, bhi);
   const V4<T> aQ = -PGAMESH_LANES(ahi, 2, 1, 0, 3), bQ = -PGAMESH_LANES(bhi, 2, 1, 0, 3);
   const V4<T> am = PGAMESH_LANES(alo, 1, 2, 3, 0), bm = PGAMESH_LANES(blo, 1, 2, 3, 0);
   const V4<T> aw = PGAMESH_LANES(alo, 0, 0, 0, 0), bw = PGAMESH_LANES(blo, 0, 0, 0, 0);
@@ -104,8 +110,7 @@ template <class T>
 template <class T>
 inline Motor<T> geometric_product_lanes(const Motor<T>& a, const Motor<T>& b) {
   V4<T> alo, ahi, blo, bhi;  // (s, e01, e02, e03), (e12, e31, e23, e0123)
-  load_lanes<T>(a, 0, alo), load_lanes<T>(a, 4, ahi), load_lanes<T>(b, 0, blo);
-  load_lanes<T>(b, 4, bhi);
+  load_motor_lanes<T>(a, alo, ahi), load_motor_lanes<T>(b, blo, bhi);
   constexpr T P = T(0), N = -T(0);  // keep, flip
   // b's A = (s, e23, e31, e12) and C = (e0123, e01, e02, e03) (two-register shuffles, once), then
   // in the orders of the four terms, (0, 1, 2, 3), (1, 0, 3, 2), (2, 3, 0, 1), (3, 2, 1, 0).
@@ -119,7 +124,6 @@ inline Motor<T> geometric_product_lanes(const Motor<T>& a, const Motor<T>& b) {
   const V4<T> aA2 = PGAMESH_LANES(ahi, 1, 1, 1, 1), aA3 = PGAMESH_LANES(ahi, 0, 0, 0, 0);
   const V4<T> aC0 = PGAMESH_LANES(ahi, 3, 3, 3, 3), aC1 = PGAMESH_LANES(alo, 1, 1, 1, 1);
   const V4<T> aC2 = PGAMESH_LANES(alo, 2, 2, 2, 2), aC3 = PGAMESH_LANES(alo, 3, 3, 3, 3);
-  // (s, e23, e31, e12) of q_a q_b: the output's signs already folded in.
   // The signed b lanes of each term: q_a q_b (output signs folded in), q_a c_b, c_a q_b.
   V4<T> q1 = bA1, q2 = bA2, q3 = bA3, x1 = bC1, x2 = bC2, x3 = bC3;
   V4<T> y0 = bA0, y1 = bA1, y2 = bA2, y3 = bA3;
@@ -254,7 +258,7 @@ constexpr Plane<T> apply_generic(const Motor<T>& m, const Plane<T>& p) {
 template <class T>
 inline Point<T> apply_simd(const Motor<T>& mo, const Point<T>& x) {
   V4<T> lo, hi, pt;  // (s, e01, e02, e03), (e12, e31, e23, e0123), (e021, e013, e032, e123)
-  load_lanes<T>(mo, 0, lo), load_lanes<T>(mo, 4, hi), load_lanes<T>(x, 0, pt);
+  load_motor_lanes<T>(mo, lo, hi), load_lanes<T>(x, 0, pt);
   const V4<T> q = -PGAMESH_LANES(hi, 2, 1, 0, 3), m = PGAMESH_LANES(lo, 1, 2, 3, 0);
   const V4<T> p = PGAMESH_LANES(pt, 2, 1, 0, 3), w = PGAMESH_LANES(pt, 3, 3, 3, 3);
   const V4<T> qw = PGAMESH_LANES(lo, 0, 0, 0, 0), cw = PGAMESH_LANES(hi, 3, 3, 3, 3);
@@ -285,7 +289,7 @@ inline Point<T> apply_simd(const Motor<T>& mo, const Point<T>& x) {
 template <class T>
 inline Plane<T> apply_simd(const Motor<T>& mo, const Plane<T>& pl) {
   V4<T> lo, hi, v;  // (s, e01, e02, e03), (e12, e31, e23, e0123), (e0, e1, e2, e3)
-  load_lanes<T>(mo, 0, lo), load_lanes<T>(mo, 4, hi), load_lanes<T>(pl, 0, v);
+  load_motor_lanes<T>(mo, lo, hi), load_lanes<T>(pl, 0, v);
   const V4<T> b = PGAMESH_LANES(hi, 2, 1, 0, 3), m = PGAMESH_LANES(lo, 1, 2, 3, 0);
   const V4<T> n = PGAMESH_LANES(v, 1, 2, 3, 0);
   const V4<T> qw = PGAMESH_LANES(lo, 0, 0, 0, 0), cw = PGAMESH_LANES(hi, 3, 3, 3, 3);
