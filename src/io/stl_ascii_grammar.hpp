@@ -271,7 +271,12 @@ std::vector<StlAsciiPiece<Consumer>> parse_ascii_stl_pieces(
         TextCursor c({starts[k], starts[k + 1]}, name);
         if (k == 0) parse_stl_ascii_header(c);  // later pieces start inside a solid, at a facet
         PageRelease none;
-        parse_stl_ascii_statements(c, pieces[k].state, pieces[k].out, none);
+        // The piece's state and consumer work on this thread's stack and are moved back after:
+        // written in place, neighbouring pieces (parsed at the same time by other threads) would
+        // share cache lines at their edges, and every vertex would pass them between cores.
+        StlAsciiPiece<Consumer> piece{std::move(pieces[k].out), {}};
+        parse_stl_ascii_statements(c, piece.state, piece.out, none);
+        pieces[k] = std::move(piece);
       } catch (...) {  // reported, if it is the text's error, by the parse of the whole text
         failed[k] = 1;
         stop.store(true, std::memory_order_relaxed);
