@@ -16,8 +16,9 @@
 //      `run` returns the exit status: 0 success, 1 unreadable input (InputError), 2 bad usage —
 //      throw UsageError for a problem between options (the message names them); CLI11 reports
 //      unknown options, missing values and bad numbers itself (exit 2, naming the option).
-//   2. Declare add_NAME_command below and call it from main.cpp, where the order of the calls is
-//      the order of `pgamesh --help` (mesh commands after fuel, before calc).
+//   2. Declare add_NAME_command below and add {"NAME", add_NAME_command} to kCliCommands in
+//      main.cpp, whose order is the order of `pgamesh --help` (mesh commands after fuel, before
+//      calc). `pgamesh NAME …` builds only NAME's sub-command, so the name must be the same.
 //   3. Test it in tests/cli/ (CliRun: exit status, stdout, stderr); document it in README.md, its
 //      doc page, and docs/json.md for --json (the vocabulary of props, check and fuel).
 // `pgamesh help NAME` and `pgamesh NAME --help` then print the same text. A command that parses its

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <cstring>
 #include <exception>
+#include <iterator>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -55,6 +56,55 @@ void on_run(CLI::App& sub, std::function<int()> run) {
 
 }  // namespace pgamesh::cli
 
+namespace {
+
+using namespace pgamesh::cli;
+
+// A command built on CLI11: its name and the function that adds it (commands.hpp).
+struct CliCommand {
+  const char* name;
+  void (*add)(CLI::App& app);
+};
+// In the order of `pgamesh --help`.
+constexpr CliCommand kCliCommands[] = {
+    {"props", add_props_command},     {"check", add_check_command},
+    {"repair", add_repair_command},   {"fuel", add_fuel_command},
+    {"convert", add_convert_command}, {"cga", add_cga_command},
+    {"quadric", add_quadric_command}, {"fit", add_fit_command},
+    {"serve", add_serve_command},     {"demo", add_demo_command}};
+// The commands that parse their own arguments (commands(): calc) are listed after `fit`.
+constexpr std::size_t kBeforePassthroughs = 8;
+
+const CliCommand* find_cli_command(const char* name) {
+  for (const CliCommand& c : kCliCommands)
+    if (std::strcmp(name, c.name) == 0) return &c;
+  return nullptr;
+}
+
+// Every command, `help` and `version`, for the help text and the messages that list them.
+void add_all_commands(CLI::App& app) {
+  for (std::size_t i = 0; i < std::size(kCliCommands); ++i) {
+    if (i == kBeforePassthroughs)
+      for (const Command& c : commands()) add_passthrough(app, c.name, c.summary, c.run);
+    kCliCommands[i].add(app);
+  }
+  CLI::App* help = app.add_subcommand("help", "pgamesh help COMMAND: the options of COMMAND");
+  on_run(*help, [&app] {
+    // app.help() would give the help of the selected sub-command, `help` itself.
+    const std::string text =
+        app.get_formatter()->make_help(&app, app.get_name(), CLI::AppFormatMode::Normal);
+    std::fputs(text.c_str(), stdout);
+    return 0;
+  });
+  CLI::App* version = app.add_subcommand("version", "print the version")->group("");
+  on_run(*version, [] {
+    std::printf("pgamesh %s\n", PGAMESH_VERSION);
+    return 0;
+  });
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
 #ifdef __GLIBC__
   // Arrays above 128 KiB get mappings of their own, unmapped when freed. glibc otherwise raises
@@ -77,31 +127,18 @@ int main(int argc, char** argv) {
       "Every command writes errors on stderr; exit status 0 on success, 1 for unreadable input,\n"
       "2 for bad usage.");
 
-  // The commands, in the order of `pgamesh --help` (commands.hpp: how to add one).
-  add_props_command(app);
-  add_check_command(app);
-  add_repair_command(app);
-  add_fuel_command(app);
-  add_convert_command(app);
-  add_cga_command(app);
-  add_quadric_command(app);
-  add_fit_command(app);
-  for (const Command& c : commands()) add_passthrough(app, c.name, c.summary, c.run);
-  add_serve_command(app);
-  add_demo_command(app);
-  CLI::App* help = app.add_subcommand("help", "pgamesh help COMMAND: the options of COMMAND");
-  on_run(*help, [&app] {
-    // app.help() would give the help of the selected sub-command, `help` itself.
-    const std::string text =
-        app.get_formatter()->make_help(&app, app.get_name(), CLI::AppFormatMode::Normal);
-    std::fputs(text.c_str(), stdout);
-    return 0;
-  });
-  CLI::App* version = app.add_subcommand("version", "print the version")->group("");
-  on_run(*version, [] {
-    std::printf("pgamesh %s\n", PGAMESH_VERSION);
-    return 0;
-  });
+  // A command that parses its own arguments gets them as given, without CLI11.
+  if (argc >= 2)
+    for (const Command& c : commands())
+      if (std::strcmp(argv[1], c.name) == 0) return c.run(argc - 1, argv + 1);
+  // `pgamesh NAME …` needs only NAME's options. Building all the commands costs about half a
+  // millisecond of every start, a tenth of it (docs/benchmarks.md), so only help, the version
+  // and usage errors build them all.
+  const CliCommand* one = argc >= 2 ? find_cli_command(argv[1]) : nullptr;
+  if (one)
+    one->add(app);
+  else
+    add_all_commands(app);
 
   if (argc < 2) {
     std::fputs(app.help().c_str(), stderr);
@@ -119,8 +156,6 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "pgamesh: unknown command '%s'\n\n%s", argv[1], app.help().c_str());
     return 2;
   }
-  // A command that parses its own arguments gets them as given.
-  if (const PassthroughRun run = passthrough_run(argv[1])) return run(argc - 1, argv + 1);
   // `pgamesh help COMMAND` is `pgamesh COMMAND --help`, word for word.
   std::vector<char*> args(argv, argv + argc);
   static char help_flag[] = "--help";
