@@ -41,7 +41,8 @@ bool same_values(const Element& a, const Element& b) {
 
 #ifdef PGAMESH_PGA3_SIMD
 // The four-lane forms (double takes them inline under AVX and through the AVX2 variant of
-// pga3/isa.hpp, float for all but the motor product; both are tested here with every build)
+// pga3/isa.hpp; float has lane-uniform forms of its own for the motor product and the point and
+// plane sandwiches, and takes the join; both types are tested here with every build)
 // against the generic formulas: random motors, and rotors (zero ideal part) acting on planes
 // through the origin, the case of the principal-axes iteration, where zero sums occur. The motor
 // product and the point sandwich give the generic bits, zeros' signs included; the plane sandwich
@@ -86,6 +87,37 @@ TEST(Pga3Kernels, LaneProductMatchesGeneric) {
   std::mt19937 rng(53);
   const Motor<float> a = random_motor<float>(rng), b = random_motor<float>(rng);
   EXPECT_TRUE(same_bits(a * b, detail::geometric_product_lanes(a, b)));
+}
+
+// The float sandwiches sum lane-uniformly (apply_lanes): the same point and plane to rounding,
+// in float and, as a check of the formulas, in double; rotors included (zero ideal part).
+template <class T>
+void expect_lane_sandwiches_match_generic(double tolerance) {
+  std::mt19937 rng(59);
+  for (int i = 0; i < 20000; ++i) {
+    Motor<T> m = random_motor<T>(rng);
+    if (i % 2 == 0) m.e01 = m.e02 = m.e03 = m.e0123 = T(0);
+    const Point<T> x = random_point<T>(rng);
+    const Plane<T> v = random_plane<T>(rng);
+    const Point<T> got_x = detail::apply_lanes(m, x), want_x = detail::apply_generic(m, x);
+    const Plane<T> got_v = detail::apply_lanes(m, v), want_v = detail::apply_generic(m, v);
+    const T *gx = &got_x.e021, *wx = &want_x.e021, *gv = &got_v.e0, *wv = &want_v.e0;
+    for (int k = 0; k < 4; ++k) {
+      ASSERT_NEAR(double(gx[k]), double(wx[k]), tolerance) << i << " point " << k;
+      ASSERT_NEAR(double(gv[k]), double(wv[k]), tolerance) << i << " plane " << k;
+    }
+  }
+}
+
+TEST(Pga3Kernels, LaneSandwichesMatchGeneric) {
+  expect_lane_sandwiches_match_generic<float>(4e-6);
+  expect_lane_sandwiches_match_generic<double>(8e-15);
+  std::mt19937 rng(61);
+  const Motor<float> m = random_motor<float>(rng);
+  const Point<float> x = random_point<float>(rng);
+  const Plane<float> v = random_plane<float>(rng);
+  EXPECT_TRUE(same_bits(apply(m, x), detail::apply_lanes(m, x)));
+  EXPECT_TRUE(same_bits(apply(m, v), detail::apply_lanes(m, v)));
 }
 
 TEST(Pga3Kernels, VectorFormsGiveTheGenericBitsFloat) {

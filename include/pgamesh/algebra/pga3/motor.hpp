@@ -317,17 +317,77 @@ inline Plane<T> apply_simd(const Motor<T>& mo, const Plane<T>& pl) {
   store_lanes<T>(out, 0, PGAMESH_LANES2(d, r, 0, 4, 5, 6));
   return out;
 }
+
+/// The point sandwich with lane-uniform sums, for float (to rounding; apply_generic's sums are
+/// grouped otherwise). With q_v = v, c_v = c and lane i's next and previous coordinates n, p
+/// (x → y → z → x), rotate(q, P) (quaternion.hpp) as a matrix,
+///   R_ii = (q_w² + v_i²) − (v_n² + v_p²),
+///   R_in = 2 (v_i v_n − q_w v_p),  R_ip = 2 (v_i v_p + q_w v_n),
+/// and t_i = 2 ((c_w v_i − q_w c_i) + (c_n v_p − c_p v_n)), so that every lane sums the same
+/// pattern: P'_i = ((R_ii P_i + R_in P_n) + R_ip P_p) + w t_i; the weight is (q_w² + v·v) w.
+/// Lanes in the point's storage order (z, y, x, w): n and p are lanes (2, 0, 1) and (1, 2, 0).
+template <class T>
+inline Point<T> apply_lanes(const Motor<T>& mo, const Point<T>& x) {
+  V4<T> lo, hi, pt;  // (s, e01, e02, e03), (e12, e31, e23, e0123), (e021, e013, e032, e123)
+  load_motor_lanes<T>(mo, lo, hi), load_lanes<T>(x, 0, pt);
+  const V4<T> v = -hi, c = PGAMESH_LANES(lo, 3, 2, 1, 0);  // (z, y, x, ·) of q_v and c_v
+  const V4<T> qw = PGAMESH_LANES(lo, 0, 0, 0, 0), cw = PGAMESH_LANES(hi, 3, 3, 3, 3);
+  const V4<T> w = PGAMESH_LANES(pt, 3, 3, 3, 3);
+  const V4<T> vn = PGAMESH_LANES(v, 2, 0, 1, 3), vp = PGAMESH_LANES(v, 1, 2, 0, 3);
+  const V4<T> cn = PGAMESH_LANES(c, 2, 0, 1, 3), cp = PGAMESH_LANES(c, 1, 2, 0, 3);
+  const V4<T> pn = PGAMESH_LANES(pt, 2, 0, 1, 3), pp = PGAMESH_LANES(pt, 1, 2, 0, 3);
+  const V4<T> vv = v * v;
+  const V4<T> a = qw * qw + vv, b = PGAMESH_LANES(vv, 2, 0, 1, 3) + PGAMESH_LANES(vv, 1, 2, 0, 3);
+  const V4<T> rii = a - b, weight = (a + b) * w;  // weight: lane 0 holds (q_w² + v·v) w
+  const V4<T> rin = v * vn - qw * vp, rip = v * vp + qw * vn;
+  const V4<T> t = (cw * v - qw * c) + (cn * vp - cp * vn);
+  const V4<T> r = ((rii * pt + (rin + rin) * pn) + (rip + rip) * pp) + (w + w) * t;
+  Point<T> out;
+  store_lanes<T>(out, 0, PGAMESH_LANES2(r, weight, 0, 1, 2, 4));
+  return out;
+}
+
+/// The plane sandwich with lane-uniform sums, for float (to rounding): the normal n' = R n with
+/// apply_lanes' matrix R, and the e0 coefficient |q|² d + 2 Σ_i ((q_w c_i − c_w v_i) n_i +
+/// (v × n)_i c_i), apply_generic's 2 (−c_w (v·n) + q_w (n·c) + (v × n)·c) summed lane by lane.
+/// Lanes in the plane's storage order (e0, e1, e2, e3): n and p of lanes 1, 2, 3 are lanes
+/// (2, 3, 1) and (3, 1, 2).
+template <class T>
+inline Plane<T> apply_lanes(const Motor<T>& mo, const Plane<T>& pl) {
+  V4<T> lo, hi, n;  // (s, e01, e02, e03), (e12, e31, e23, e0123), (e0, e1, e2, e3)
+  load_motor_lanes<T>(mo, lo, hi), load_lanes<T>(pl, 0, n);
+  const V4<T> v = -PGAMESH_LANES(hi, 3, 2, 1, 0), c = lo;  // (·, x, y, z) of q_v and c_v
+  const V4<T> qw = PGAMESH_LANES(lo, 0, 0, 0, 0), cw = PGAMESH_LANES(hi, 3, 3, 3, 3);
+  const V4<T> d = PGAMESH_LANES(n, 0, 0, 0, 0);
+  const V4<T> vn = PGAMESH_LANES(v, 0, 2, 3, 1), vp = PGAMESH_LANES(v, 0, 3, 1, 2);
+  const V4<T> nn = PGAMESH_LANES(n, 0, 2, 3, 1), np = PGAMESH_LANES(n, 0, 3, 1, 2);
+  const V4<T> vv = v * v;
+  const V4<T> a = qw * qw + vv, b = PGAMESH_LANES(vv, 0, 2, 3, 1) + PGAMESH_LANES(vv, 0, 3, 1, 2);
+  const V4<T> rin = v * vn - qw * vp, rip = v * vp + qw * vn;
+  const V4<T> r = ((a - b) * n + (rin + rin) * nn) + (rip + rip) * np;
+  const V4<T> e = (qw * c - cw * v) * n + (vn * np - vp * nn) * c;
+  const V4<T> sum = (e + PGAMESH_LANES(e, 0, 2, 3, 1)) + PGAMESH_LANES(e, 0, 3, 1, 2);
+  const V4<T> offset = (a + b) * d + (sum + sum);  // lane 1: the e0 coefficient
+  Plane<T> out;
+  store_lanes<T>(out, 0, PGAMESH_LANES2(r, offset, 5, 1, 2, 3));
+  return out;
+}
 #endif
 }  // namespace detail
 
 /// M X M̃ for a point X = w I3 − ε P: weight |q|² w, weighted position q P q* + w t with
 /// t = 2 (c_w q_v − q_w c_v + c_v × q_v) the translation (−2 vec(c q*)). For a normalized M,
-/// the rigid motion of the point (a direction, w = 0, is only rotated).
+/// the rigid motion of the point (a direction, w = 0, is only rotated). float runs apply_lanes
+/// (to rounding), double the generic formula or its four-lane form (the same bits; docs/pga3.md
+/// "Speed").
 template <class T>
 constexpr Point<T> apply(const Motor<T>& m, const Point<T>& x) {
 #ifdef PGAMESH_PGA3_SIMD
-  if constexpr (detail::kHasSimd<T>)
+  if constexpr (std::is_same_v<T, float>) {
+    if (!std::is_constant_evaluated()) return detail::apply_lanes(m, x);
+  } else if constexpr (detail::kHasSimd<T>) {
     if (!std::is_constant_evaluated()) return detail::apply_simd(m, x);
+  }
 #endif
   if constexpr (std::is_same_v<T, double> && detail::kDoubleOutOfLine)
     if (!std::is_constant_evaluated()) return detail::apply(detail::Isa::avx2, m, x);
@@ -335,12 +395,16 @@ constexpr Point<T> apply(const Motor<T>& m, const Point<T>& x) {
 }
 
 /// M p M̃ for a plane p = n + d e0: normal q n q*, e0 coefficient |q|² d + 2 Re(q n c*)
-/// (= d − n·t for a unit rotation-free motor translating by t).
+/// (= d − n·t for a unit rotation-free motor translating by t). float runs apply_lanes (to
+/// rounding), double the generic formula or, under AVX, its four-lane form.
 template <class T>
 constexpr Plane<T> apply(const Motor<T>& m, const Plane<T>& p) {
 #ifdef PGAMESH_PGA3_SIMD
-  if constexpr (detail::kHasSimd<T>)
+  if constexpr (std::is_same_v<T, float>) {
+    if (!std::is_constant_evaluated()) return detail::apply_lanes(m, p);
+  } else if constexpr (detail::kHasSimd<T>) {
     if (!std::is_constant_evaluated()) return detail::apply_simd(m, p);
+  }
 #endif
   return detail::apply_generic(m, p);
 }
