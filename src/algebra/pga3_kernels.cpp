@@ -5,6 +5,7 @@
 // library is compiled with -ffp-contract=off, so no multiply-add is fused in either variant.
 #include "pgamesh/algebra/pga3/batch.hpp"
 #include "pgamesh/algebra/pga3/isa.hpp"
+#include "pgamesh/algebra/pga3/join.hpp"
 #include "pgamesh/algebra/pga3/motor.hpp"
 
 #ifdef PGAMESH_PGA3_AVX2_VARIANT
@@ -62,6 +63,11 @@ constexpr bool kRunsAvx2 = false;
                                                                const Plane<double>& p) {
   return apply_simd(m, p);
 }
+[[PGAMESH_TARGET_AVX2, gnu::flatten]] Plane<double> join_avx2(const Point<double>& a,
+                                                              const Point<double>& b,
+                                                              const Point<double>& c) {
+  return join_simd(a, b, c);
+}
 #undef PGAMESH_TARGET_AVX2
 
 bool use_avx2(Isa isa) noexcept {
@@ -93,6 +99,11 @@ Point<double> apply(Isa isa, const Motor<double>& m, const Point<double>& x) noe
 }
 Plane<double> apply(Isa isa, const Motor<double>& m, const Plane<double>& p) noexcept {
   return use_avx2(isa) ? apply_avx2(m, p) : apply_generic(m, p);
+}
+
+Plane<double> join(Isa isa, const Point<double>& a, const Point<double>& b,
+                   const Point<double>& c) noexcept {
+  return use_avx2(isa) ? join_avx2(a, b, c) : pga3::join(pga3::join(a, b), c);
 }
 
 }  // namespace pgamesh::pga3::detail

@@ -121,6 +121,10 @@ TEST(Pga3Isa, SingleElementVariantsGiveTheGenericValues) {
     ASSERT_TRUE(same_bits(detail::geometric_product(Isa::avx2, a, b), ab)) << i;
     ASSERT_TRUE(same_bits(detail::apply(Isa::avx2, a, x), ax)) << i;
     ASSERT_TRUE(same_values(detail::apply(Isa::avx2, a, v), av)) << i;
+    const Point<double> y = random_point<double>(rng), z = random_point<double>(rng);
+    const Plane<double> xyz = join(join(x, y), z);
+    ASSERT_TRUE(same_bits(detail::join(Isa::baseline, x, y, z), xyz)) << i;
+    ASSERT_TRUE(same_values(detail::join(Isa::avx2, x, y, z), xyz)) << i;
   }
 }
 

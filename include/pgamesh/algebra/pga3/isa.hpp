@@ -17,9 +17,10 @@
 
 namespace pgamesh::pga3::detail {
 
-/// Whether motor.hpp calls the double motor product and point sandwich out of line (below), so
-/// that they run AVX2 where the processor has it: on x86-64 builds without AVX. Builds with AVX
-/// inline the four-lane forms themselves; elsewhere the generic formulas stay inline.
+/// Whether motor.hpp and join.hpp call the double motor product, point sandwich and join of three
+/// points out of line (below), so that they run AVX2 where the processor has it: on x86-64 builds
+/// without AVX. Builds with AVX inline the four-lane forms themselves; elsewhere the generic
+/// formulas stay inline.
 inline constexpr bool kDoubleOutOfLine =
 #if defined(PGAMESH_PGA3_AVX2_VARIANT) && !defined(__AVX__)
     true;
@@ -52,5 +53,9 @@ Point<double> apply(Isa isa, const Motor<double>& m, const Point<double>& x) noe
 /// Not called by motor.hpp: out of line, the AVX2 variant is no faster than the inlined generic
 /// formula (docs/pga3.md "Speed"); here for the benchmark's side-by-side.
 Plane<double> apply(Isa isa, const Motor<double>& m, const Plane<double>& p) noexcept;
+/// The join of three points: join(join(a, b), c) of join.hpp, or join_simd (the same values up to
+/// the sign of a zero).
+Plane<double> join(Isa isa, const Point<double>& a, const Point<double>& b,
+                   const Point<double>& c) noexcept;
 
 }  // namespace pgamesh::pga3::detail

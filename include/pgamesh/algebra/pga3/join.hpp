@@ -7,6 +7,7 @@
 #include <type_traits>
 
 #include "pgamesh/algebra/pga3/grades.hpp"
+#include "pgamesh/algebra/pga3/isa.hpp"
 #include "pgamesh/algebra/pga3/simd.hpp"
 
 namespace pgamesh::pga3 {
@@ -73,13 +74,16 @@ inline Plane<T> join_simd(const Point<T>& a, const Point<T>& b, const Point<T>& 
 
 /// v0 ∨ v1 ∨ v2: the carrier of a triangle, normal (v1 − v0) × (v2 − v0), e0 coefficient −det
 /// (paper eq. 3.12, docs/conventions.md §5). float (and double under AVX) take the four-lane
-/// form of simd.hpp (the same values).
+/// form of simd.hpp inline, double on other x86-64 builds out of line, where the processor's
+/// AVX2 runs it (pga3/isa.hpp): the same values, a zero possibly with the other sign.
 template <class T>
 constexpr Plane<T> join(const Point<T>& a, const Point<T>& b, const Point<T>& c) {
 #ifdef PGAMESH_PGA3_SIMD
   if constexpr (detail::kHasSimd<T>)
     if (!std::is_constant_evaluated()) return detail::join_simd(a, b, c);
 #endif
+  if constexpr (std::is_same_v<T, double> && detail::kDoubleOutOfLine)
+    if (!std::is_constant_evaluated()) return detail::join(detail::Isa::avx2, a, b, c);
   return join(join(a, b), c);
 }
 
