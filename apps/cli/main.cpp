@@ -4,10 +4,10 @@
 #include <cstdio>
 #include <cstring>
 #include <exception>
-#include <iterator>
 #include <memory>
 #include <sstream>
 #include <string>
+#include <string_view>
 #include <vector>
 #ifdef __GLIBC__
 #include <malloc.h>
@@ -72,8 +72,8 @@ constexpr CliCommand kCliCommands[] = {
     {"convert", add_convert_command}, {"cga", add_cga_command},
     {"quadric", add_quadric_command}, {"fit", add_fit_command},
     {"serve", add_serve_command},     {"demo", add_demo_command}};
-// The commands that parse their own arguments (commands(): calc) are listed after `fit`.
-constexpr std::size_t kBeforePassthroughs = 8;
+// The commands that parse their own arguments (commands(): calc) are listed after this one.
+constexpr std::string_view kBeforePassthroughs = "fit";
 
 const CliCommand* find_cli_command(const char* name) {
   for (const CliCommand& c : kCliCommands)
@@ -83,10 +83,10 @@ const CliCommand* find_cli_command(const char* name) {
 
 // Every command, `help` and `version`, for the help text and the messages that list them.
 void add_all_commands(CLI::App& app) {
-  for (std::size_t i = 0; i < std::size(kCliCommands); ++i) {
-    if (i == kBeforePassthroughs)
+  for (const CliCommand& command : kCliCommands) {
+    command.add(app);
+    if (command.name == kBeforePassthroughs)
       for (const Command& c : commands()) add_passthrough(app, c.name, c.summary, c.run);
-    kCliCommands[i].add(app);
   }
   CLI::App* help = app.add_subcommand("help", "pgamesh help COMMAND: the options of COMMAND");
   on_run(*help, [&app] {

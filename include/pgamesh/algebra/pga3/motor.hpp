@@ -319,8 +319,9 @@ inline Plane<T> apply_simd(const Motor<T>& mo, const Plane<T>& pl) {
 }
 
 /// The point sandwich with lane-uniform sums, for float (to rounding; apply_generic's sums are
-/// grouped otherwise). With q_v = v, c_v = c and lane i's next and previous coordinates n, p
-/// (x → y → z → x), rotate(q, P) (quaternion.hpp) as a matrix,
+/// grouped otherwise): the same M X M̃ (motors as in docs/conventions.md §7, points §2, in the
+/// dual-quaternion form of quaternion.hpp). With q_v = v, c_v = c and lane i's next and previous
+/// coordinates n, p (x → y → z → x), rotate(q, P) (quaternion.hpp) as a matrix,
 ///   R_ii = (q_w² + v_i²) − (v_n² + v_p²),
 ///   R_in = 2 (v_i v_n − q_w v_p),  R_ip = 2 (v_i v_p + q_w v_n),
 /// and t_i = 2 ((c_w v_i − q_w c_i) + (c_n v_p − c_p v_n)), so that every lane sums the same
@@ -347,7 +348,8 @@ inline Point<T> apply_lanes(const Motor<T>& mo, const Point<T>& x) {
   return out;
 }
 
-/// The plane sandwich with lane-uniform sums, for float (to rounding): the normal n' = R n with
+/// The plane sandwich with lane-uniform sums, for float (to rounding), M p M̃ (docs/conventions.md
+/// §7, planes §2): the normal n' = R n with
 /// apply_lanes' matrix R, and the e0 coefficient |q|² d + 2 Σ_i ((q_w c_i − c_w v_i) n_i +
 /// (v × n)_i c_i), apply_generic's 2 (−c_w (v·n) + q_w (n·c) + (v × n)·c) summed lane by lane.
 /// Lanes in the plane's storage order (e0, e1, e2, e3): n and p of lanes 1, 2, 3 are lanes
