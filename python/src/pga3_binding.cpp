@@ -96,7 +96,14 @@ Multivector by the sandwich M x ~M, M.apply_point(p) moves a point given by its 
              if (!a || a.ndim() != 1 || a.shape(0) != 8)
                throw py::value_error(
                    "a motor has 8 coefficients: s, e01, e02, e03, e12, e31, e23, e0123");
-             return Motor{a.at(0), a.at(1), a.at(2), a.at(3), a.at(4), a.at(5), a.at(6), a.at(7)};
+             return Motor{.s = a.at(0),
+                          .e23 = a.at(6),
+                          .e31 = a.at(5),
+                          .e12 = a.at(4),
+                          .e0123 = a.at(7),
+                          .e01 = a.at(1),
+                          .e02 = a.at(2),
+                          .e03 = a.at(3)};
            }),
            py::arg("coefficients"))
       .def_readonly("s", &Motor::s)

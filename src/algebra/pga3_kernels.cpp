@@ -1,8 +1,11 @@
 // The double kernels of pga3/isa.hpp, compiled for baseline x86-64 (SSE2) and again for AVX2, one
-// chosen per call from a flag read once at start-up (docs/pga3.md "Speed"). Each variant is the
-// header's always-inline loop or formula compiled under another target attribute: the same source
-// and the same operations in the same order, so the same bits. "avx2" does not enable FMA, and the
-// library is compiled with -ffp-contract=off, so no multiply-add is fused in either variant.
+// chosen per call from a flag read once at start-up (docs/pga3.md "Speed"). The batch loops and
+// the join are the header's code compiled under another target attribute: the same operations in
+// the same order, so the same bits. The motor product and the sandwiches run the quaternion-order
+// formulas in the baseline variant and the lane forms in the AVX2 variant (with four doubles split
+// over two SSE2 registers, the lane shuffles would cost three times the generic formula). "avx2"
+// does not enable FMA, and the library is compiled with -ffp-contract=off, so no multiply-add is
+// fused in either variant.
 #include "pgamesh/algebra/pga3/batch.hpp"
 #include "pgamesh/algebra/pga3/isa.hpp"
 #include "pgamesh/algebra/pga3/join.hpp"
@@ -53,15 +56,15 @@ constexpr bool kRunsAvx2 = false;
 }
 [[PGAMESH_TARGET_AVX2, gnu::flatten]] Motor<double> geometric_product_avx2(const Motor<double>& a,
                                                                            const Motor<double>& b) {
-  return geometric_product_simd(a, b);
+  return geometric_product_lanes(a, b);
 }
 [[PGAMESH_TARGET_AVX2, gnu::flatten]] Point<double> apply_avx2(const Motor<double>& m,
                                                                const Point<double>& x) {
-  return apply_simd(m, x);
+  return apply_lanes(m, x);
 }
 [[PGAMESH_TARGET_AVX2, gnu::flatten]] Plane<double> apply_avx2(const Motor<double>& m,
                                                                const Plane<double>& p) {
-  return apply_simd(m, p);
+  return apply_lanes(m, p);
 }
 [[PGAMESH_TARGET_AVX2, gnu::flatten]] Plane<double> join_avx2(const Point<double>& a,
                                                               const Point<double>& b,

@@ -12,6 +12,15 @@ namespace {
 using Vector = pga3::Plane<double>;  // a vector a e1 + b e2 + c e3 (a plane through the origin)
 using Rotor = pga3::Motor<double>;
 
+// Products and sandwiches in the quaternion order, whose bits the mass properties keep from one
+// version to the next (docs/pga3.md "Two summation orders").
+Rotor product(const Rotor& a, const Rotor& b) {
+  return pga3::quaternion_order::geometric_product(a, b);
+}
+Vector turn(const Rotor& r, const Vector& v) {
+  return pga3::quaternion_order::apply(r, v);
+}
+
 Vector basis_vector(int i) {
   return pga3::plane(i == 0 ? 1.0 : 0.0, i == 1 ? 1.0 : 0.0, i == 2 ? 1.0 : 0.0, 0.0);
 }
@@ -32,10 +41,10 @@ Vec3d pivot_axis(int p, int q) {
 // eq. 5.7 as corrected (docs/conventions.md §11): I′_i = Σ_j (e_j · (R̃_k e_i R_k)) R_k I_j R̃_k.
 std::array<Vector, 3> turn_rows(const std::array<Vector, 3>& rows, const Rotor& rk) {
   std::array<Vector, 3> turned, out{};
-  for (int j = 0; j < 3; ++j) turned[j] = pga3::apply(rk, rows[j]);
+  for (int j = 0; j < 3; ++j) turned[j] = turn(rk, rows[j]);
   const Rotor rk_rev = pga3::reverse(rk);
   for (int i = 0; i < 3; ++i) {
-    const Vector back = pga3::apply(rk_rev, basis_vector(i));
+    const Vector back = turn(rk_rev, basis_vector(i));
     for (int j = 0; j < 3; ++j) {
       const double w = component(back, j);
       out[i].e1 += w * turned[j].e1;
@@ -76,7 +85,7 @@ JacobiResult rotor_jacobi(const Mat3& m) {
       const double t = (tau >= 0 ? 1.0 : -1.0) / (std::abs(tau) + std::sqrt(1 + tau * tau));
       const Rotor rk = pga3::rotor(std::atan(t), pivot_axis(p, q));
       rows = turn_rows(rows, rk);
-      r.rotor = rk * r.rotor;  // R ← R_k R
+      r.rotor = product(rk, r.rotor);  // R ← R_k R
       ++r.rotations;
     }
   }
@@ -89,7 +98,7 @@ namespace {
 
 // u_i = R̃ e_i R (docs/conventions.md §11).
 Vec3d eigenvector(const Rotor& r, int i) {
-  return pga3::apply(pga3::reverse(r), basis_vector(i)).normal();
+  return turn(pga3::reverse(r), basis_vector(i)).normal();
 }
 
 // The index of the largest-|·| component, the first one when several are equal to rounding.
@@ -116,7 +125,7 @@ PrincipalFrame principal_frame(const Mat3& tensor, double degeneracy_tolerance) 
   for (const auto& [p, q] : {std::pair{0, 1}, std::pair{1, 2}, std::pair{0, 1}}) {
     if (d[q] < d[p]) {
       const int axis = 3 - p - q;
-      r = pga3::rotor(std::numbers::pi / 2, unit(axis)) * r;
+      r = product(pga3::rotor(std::numbers::pi / 2, unit(axis)), r);
       std::swap(d[p], d[q]);
     }
   }
@@ -126,13 +135,13 @@ PrincipalFrame principal_frame(const Mat3& tensor, double degeneracy_tolerance) 
   const bool flip1 = eigenvector(r, 1)[dominant_component(eigenvector(r, 1))] < 0;
   if (flip0 || flip1) {
     const int k = flip0 && flip1 ? 2 : (flip0 ? 1 : 0);
-    r = pga3::rotor(std::numbers::pi, unit(k)) * r;
+    r = product(pga3::rotor(std::numbers::pi, unit(k)), r);
   }
   PrincipalFrame f;
   f.moments = d;
   f.rotor = pga3::normalized(pga3::reverse(r));  // rotor e_i rotor~ = R̃ e_i R = u_i
   if (f.rotor.s < 0) f.rotor = -1.0 * f.rotor;
-  for (int i = 0; i < 3; ++i) f.axes[i] = pga3::apply(f.rotor, basis_vector(i)).normal();
+  for (int i = 0; i < 3; ++i) f.axes[i] = turn(f.rotor, basis_vector(i)).normal();
   const double scale = std::max({std::abs(d[0]), std::abs(d[1]), std::abs(d[2])});
   f.degenerate =
       d[1] - d[0] <= degeneracy_tolerance * scale || d[2] - d[1] <= degeneracy_tolerance * scale;

@@ -13,9 +13,12 @@ Vec3d up_from_attitude(Vec3d level_up, double pitch, double roll) {
     throw std::invalid_argument("pitch and roll must be finite");
   const Vec3d u = unit_up(level_up);
   // Nose up is a right-handed turn about the right axis −y; right side down about forward +x.
+  // In the quaternion order, whose bits the fuel results keep (docs/pga3.md "Two summation
+  // orders").
+  namespace qo = pga3::quaternion_order;
   const pga3::Motor<double> r =
-      pga3::rotor(pitch, Vec3d{0, -1, 0}) * pga3::rotor(roll, Vec3d{1, 0, 0});
-  const pga3::Point<double> d = pga3::apply(pga3::reverse(r), pga3::direction(u.x, u.y, u.z));
+      qo::geometric_product(pga3::rotor(pitch, Vec3d{0, -1, 0}), pga3::rotor(roll, Vec3d{1, 0, 0}));
+  const pga3::Point<double> d = qo::apply(pga3::reverse(r), pga3::direction(u.x, u.y, u.z));
   return unit_up(d.weighted());
 }
 

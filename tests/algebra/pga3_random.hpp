@@ -76,8 +76,10 @@ pga3::Point<T> random_point(std::mt19937& r) {
 }
 template <class T>
 pga3::Motor<T> random_motor(std::mt19937& r) {
-  return {Num<T>::random(r), Num<T>::random(r), Num<T>::random(r), Num<T>::random(r),
-          Num<T>::random(r), Num<T>::random(r), Num<T>::random(r), Num<T>::random(r)};
+  pga3::Motor<T> m;
+  for (T* x : {&m.s, &m.e01, &m.e02, &m.e03, &m.e12, &m.e31, &m.e23, &m.e0123})
+    *x = Num<T>::random(r);  // in basis order, as the random elements have always been drawn
+  return m;
 }
 template <class T>
 pga3::Multivector<T> random_multivector(std::mt19937& r) {

@@ -163,7 +163,7 @@ TEST(Pga3ExpLogFixed, HalfTurnsAndFullTurns) {
   EXPECT_NEAR(p.z, 5.0, 1e-15);
   EXPECT_TRUE(mv_near(to_multivector(log(half)), to_multivector((-M_PI / 2) * axis)));
   // A full turn about the same axis is −1 (θ/2 = π): finite, and exp(log) returns it.
-  const Motor<double> full{-1, 0, 0, 0, 0, 0, 0, 0};
+  const Motor<double> full{.s = -1};
   const Line<double> lf = log(full);
   EXPECT_TRUE(finite(exp(lf)));
   EXPECT_TRUE(mv_near(to_multivector(exp(lf)), to_multivector(full)));

@@ -1,7 +1,8 @@
-// The straight-line kernels of docs/pga3.md "Speed": the four-lane forms (simd.hpp) of the motor
-// product, of the point and plane sandwiches and of the join of three points give the same bits
-// as the generic formulas (up to the sign of a zero), which the exact tests
-// (test_pga3_products.cpp, mpq_class) check against the 16-component product; and the batch forms
+// The straight-line kernels of docs/pga3.md "Speed": the lane forms (simd.hpp) of the motor
+// product and of the point and plane sandwiches equal the quaternion-order (generic) formulas,
+// which the exact tests (test_pga3_products.cpp, mpq_class) check against the 16-component
+// product — exactly where every operation is exact (integer coefficients), to rounding otherwise;
+// the four-lane join gives the generic bits up to the sign of a zero; and the batch forms
 // apply_to_points / apply_to_planes equal apply() — exactly in rational arithmetic, to rounding in
 // float and double.
 #include <gtest/gtest.h>
@@ -40,34 +41,60 @@ bool same_values(const Element& a, const Element& b) {
 }
 
 #ifdef PGAMESH_PGA3_SIMD
-// The four-lane forms (double takes them inline under AVX and through the AVX2 variant of
-// pga3/isa.hpp; float has lane-uniform forms of its own for the motor product and the point and
-// plane sandwiches, and takes the join; both types are tested here with every build)
-// against the generic formulas: random motors, and rotors (zero ideal part) acting on planes
-// through the origin, the case of the principal-axes iteration, where zero sums occur. The motor
-// product and the point sandwich give the generic bits, zeros' signs included; the plane sandwich
-// and the join the same values, a zero possibly with the other sign.
+// Whether the double operators run the lane forms: inline in builds with AVX, through the AVX2
+// variant of pga3/isa.hpp on x86-64 processors with AVX2; the quaternion order otherwise.
+bool double_runs_lanes() {
+  return detail::kHasSimd<double> || (detail::kDoubleOutOfLine && detail::runs(detail::Isa::avx2));
+}
+
+// The lane forms on integer coefficients in [−8, 8]: every product and sum is exact in float and
+// double, so they must equal the quaternion-order formulas exactly, whatever the summation order
+// (a zero may carry the other sign). This checks each term's sign pattern and lane order; half the
+// motors are rotors (zero ideal part) and half the planes pass through the origin.
 template <class T>
-void expect_vector_kernels_match_generic() {
+void expect_lane_forms_exact_on_integers() {
   std::mt19937 rng(41);
+  std::uniform_int_distribution<int> coef(-8, 8);
+  const auto motor = [&] {
+    Motor<T> m;
+    for (T* x : {&m.s, &m.e01, &m.e02, &m.e03, &m.e12, &m.e31, &m.e23, &m.e0123}) *x = T(coef(rng));
+    return m;
+  };
   for (int i = 0; i < 20000; ++i) {
-    Motor<T> a = random_motor<T>(rng), b = random_motor<T>(rng);
-    Plane<T> v = random_plane<T>(rng);
-    const Point<T> x = random_point<T>(rng);
+    Motor<T> a = motor(), b = motor();
+    Plane<T> v = plane(T(coef(rng)), T(coef(rng)), T(coef(rng)), T(coef(rng)));
+    const Point<T> x = point(T(coef(rng)), T(coef(rng)), T(coef(rng)));
     if (i % 2 == 0) a.e01 = a.e02 = a.e03 = a.e0123 = v.e0 = T(0);
     if (i % 4 == 0) b.e01 = b.e02 = b.e03 = b.e0123 = T(0);
     ASSERT_TRUE(
-        same_bits(detail::geometric_product_simd(a, b), detail::geometric_product_generic(a, b)))
+        same_values(detail::geometric_product_lanes(a, b), detail::geometric_product_generic(a, b)))
         << i;
-    ASSERT_TRUE(same_bits(detail::apply_simd(a, x), detail::apply_generic(a, x))) << i;
-    ASSERT_TRUE(same_values(detail::apply_simd(a, v), detail::apply_generic(a, v))) << i;
-    const Point<T> y = random_point<T>(rng), z = random_point<T>(rng);
+    ASSERT_TRUE(same_values(detail::apply_lanes(a, x), detail::apply_generic(a, x))) << i;
+    ASSERT_TRUE(same_values(detail::apply_lanes(a, v), detail::apply_generic(a, v))) << i;
+  }
+}
+TEST(Pga3Kernels, LaneFormsAreExactOnIntegers) {
+  expect_lane_forms_exact_on_integers<float>();
+  expect_lane_forms_exact_on_integers<double>();
+}
+
+// The four-lane join (double takes it inline under AVX and through the AVX2 variant of
+// pga3/isa.hpp; float always) gives the generic values, a zero possibly with the other sign.
+template <class T>
+void expect_join_matches_generic() {
+  std::mt19937 rng(43);
+  for (int i = 0; i < 20000; ++i) {
+    const Point<T> x = random_point<T>(rng), y = random_point<T>(rng), z = random_point<T>(rng);
     ASSERT_TRUE(same_values(detail::join_simd(x, y, z), join(join(x, y), z))) << i;
   }
 }
+TEST(Pga3Kernels, FourLaneJoinGivesTheGenericValues) {
+  expect_join_matches_generic<float>();
+  expect_join_matches_generic<double>();
+}
 
-// The float motor product sums lane-uniformly (geometric_product_lanes): the same product to
-// rounding, in float and, as a check of the formula, in double.
+// The motor product sums lane-uniformly (geometric_product_lanes): the quaternion-order product
+// to rounding, on random coefficients in [−1, 1).
 template <class T>
 void expect_lane_product_matches_generic(double tolerance) {
   std::mt19937 rng(47);
@@ -84,13 +111,19 @@ void expect_lane_product_matches_generic(double tolerance) {
 TEST(Pga3Kernels, LaneProductMatchesGeneric) {
   expect_lane_product_matches_generic<float>(2e-6);
   expect_lane_product_matches_generic<double>(4e-15);
+  // The operator runs it in float, and in double where AVX2 runs.
   std::mt19937 rng(53);
   const Motor<float> a = random_motor<float>(rng), b = random_motor<float>(rng);
   EXPECT_TRUE(same_bits(a * b, detail::geometric_product_lanes(a, b)));
+  const Motor<double> c = random_motor<double>(rng), d = random_motor<double>(rng);
+  EXPECT_TRUE(same_bits(c * d, double_runs_lanes() ? detail::geometric_product_lanes(c, d)
+                                                   : detail::geometric_product_generic(c, d)));
+  EXPECT_TRUE(same_bits(quaternion_order::geometric_product(c, d),
+                        detail::geometric_product_generic(c, d)));
 }
 
-// The float sandwiches sum lane-uniformly (apply_lanes): the same point and plane to rounding,
-// in float and, as a check of the formulas, in double; rotors included (zero ideal part).
+// The sandwiches sum lane-uniformly (apply_lanes): the quaternion-order point and plane to
+// rounding; rotors included (zero ideal part).
 template <class T>
 void expect_lane_sandwiches_match_generic(double tolerance) {
   std::mt19937 rng(59);
@@ -118,13 +151,16 @@ TEST(Pga3Kernels, LaneSandwichesMatchGeneric) {
   const Plane<float> v = random_plane<float>(rng);
   EXPECT_TRUE(same_bits(apply(m, x), detail::apply_lanes(m, x)));
   EXPECT_TRUE(same_bits(apply(m, v), detail::apply_lanes(m, v)));
-}
-
-TEST(Pga3Kernels, VectorFormsGiveTheGenericBitsFloat) {
-  expect_vector_kernels_match_generic<float>();
-}
-TEST(Pga3Kernels, VectorFormsGiveTheGenericBitsDouble) {
-  expect_vector_kernels_match_generic<double>();
+  const Motor<double> n = random_motor<double>(rng);
+  const Point<double> y = random_point<double>(rng);
+  const Plane<double> u = random_plane<double>(rng);
+  const bool lanes = double_runs_lanes();
+  EXPECT_TRUE(
+      same_bits(apply(n, y), lanes ? detail::apply_lanes(n, y) : detail::apply_generic(n, y)));
+  EXPECT_TRUE(
+      same_bits(apply(n, u), lanes ? detail::apply_lanes(n, u) : detail::apply_generic(n, u)));
+  EXPECT_TRUE(same_bits(quaternion_order::apply(n, y), detail::apply_generic(n, y)));
+  EXPECT_TRUE(same_bits(quaternion_order::apply(n, u), detail::apply_generic(n, u)));
 }
 #endif
 

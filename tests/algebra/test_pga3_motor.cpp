@@ -164,8 +164,8 @@ TYPED_TEST(Pga3Motor, NormalizedAndInverse) {
   std::uniform_real_distribution<T> coef(T(-1), T(1));
   for (int i = 0; i < 200; ++i) {
     // An arbitrary even element: no Study condition, no unit weight.
-    const Motor<T> m{coef(rng), coef(rng), coef(rng), coef(rng),
-                     coef(rng), coef(rng), coef(rng), coef(rng)};
+    Motor<T> m;
+    for (T* x : {&m.s, &m.e01, &m.e02, &m.e03, &m.e12, &m.e31, &m.e23, &m.e0123}) *x = coef(rng);
     if (norm(m) < T(0.2)) continue;
     const Motor<T> n = normalized(m);
     const Motor<T> nn = n * ~n;  // = 1 exactly (also the e0123 part)
@@ -184,8 +184,8 @@ TYPED_TEST(Pga3Motor, NormalizedAndInverse) {
 }
 
 TEST(Pga3MotorFixed, ZeroAxisRotorIsIdentity) {
-  EXPECT_EQ(rotor(1.0, Vec3d{0, 0, 0}), (Motor<double>{1, 0, 0, 0, 0, 0, 0, 0}));
-  EXPECT_EQ(identity_motor<double>(), (Motor<double>{1, 0, 0, 0, 0, 0, 0, 0}));
+  EXPECT_EQ(rotor(1.0, Vec3d{0, 0, 0}), (Motor<double>{.s = 1}));
+  EXPECT_EQ(identity_motor<double>(), (Motor<double>{.s = 1}));
   EXPECT_EQ(apply(identity_motor<double>(), point(1.0, 2.0, 3.0)), point(1.0, 2.0, 3.0));
   EXPECT_EQ(normalized(Motor<double>{}), Motor<double>{});
 }

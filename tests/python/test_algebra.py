@@ -36,6 +36,19 @@ def test_motor_moves_points():
     np.testing.assert_allclose(moved.coefficients[11:15], [0, 1, 0, 1], atol=1e-15)
 
 
+def test_motor_coefficients_in_basis_order():
+    # s, e01, e02, e03, e12, e31, e23, e0123, whatever the storage order of the C++ type.
+    c = [1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0]
+    m = pga3.Motor(c)
+    assert list(m.coefficients) == c
+    assert (m.s, m.e01, m.e02, m.e03, m.e12, m.e31, m.e23, m.e0123) == tuple(c)
+    mv = m.multivector
+    assert [mv[k] for k in ("1", "e01", "e02", "e03", "e12", "e31", "e23", "e0123")] == c
+    # The composition of two translators adds their shifts, exactly for these values.
+    shift = pga3.translator((1, 2, 3)) * pga3.translator((4, 8, 16))
+    assert list(shift.coefficients) == [1, -2.5, -5, -9.5, 0, 0, 0, 0]
+
+
 def test_principal_motor_places_the_frame():
     mesh = pgamesh.load("data/meshes/bunny.stl")
     motor = mesh.principal_motor

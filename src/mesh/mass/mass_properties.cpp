@@ -94,7 +94,9 @@ MassProperties mass_properties_from_sums(const BoundarySums& sums, Vec3d referen
   p.products_com = products_of_inertia(p.inertia_com);
   p.products_origin = products_of_inertia(p.inertia_origin);
   p.principal = principal_frame(p.inertia_com, options.degeneracy_tolerance);
-  p.principal_motor = pga3::translator(p.center_of_mass) * p.principal.rotor;
+  // In the quaternion order, as the principal frame (docs/pga3.md "Two summation orders").
+  p.principal_motor = pga3::quaternion_order::geometric_product(pga3::translator(p.center_of_mass),
+                                                                p.principal.rotor);
   return p;
 }
 

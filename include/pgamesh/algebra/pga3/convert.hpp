@@ -56,7 +56,14 @@ constexpr Point<T> to_point(const Multivector<T>& m) {
 /// ⟨A⟩_0 + ⟨A⟩_2 + ⟨A⟩_4 as a Motor.
 template <class T>
 constexpr Motor<T> to_motor(const Multivector<T>& m) {
-  return {m[kS], m[kE01], m[kE02], m[kE03], m[kE12], m[kE31], m[kE23], m[kE0123]};
+  return {.s = m[kS],
+          .e23 = m[kE23],
+          .e31 = m[kE31],
+          .e12 = m[kE12],
+          .e0123 = m[kE0123],
+          .e01 = m[kE01],
+          .e02 = m[kE02],
+          .e03 = m[kE03]};
 }
 
 }  // namespace pgamesh::pga3

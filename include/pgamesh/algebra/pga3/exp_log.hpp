@@ -81,7 +81,14 @@ Motor<T> exp(const Line<T>& b) {
   const T lm = dot(l, m);      // = u·v with u = −l, v = m up to the sign absorbed below
   const Vec3<T> rot = sc * l;  // (e23, e31, e12) = −(u sinc θ)
   const Vec3<T> ideal = sc * m + (lm * g) * l;  // v sinc θ + u (u·v) g
-  return {cos_theta, ideal.x, ideal.y, ideal.z, rot.z, rot.y, rot.x, lm * sc};
+  return {.s = cos_theta,
+          .e23 = rot.x,
+          .e31 = rot.y,
+          .e12 = rot.z,
+          .e0123 = lm * sc,
+          .e01 = ideal.x,
+          .e02 = ideal.y,
+          .e03 = ideal.z};
 }
 
 /// log(M) of a normalized motor: the bivector B with exp(B) = M and half-angle

@@ -58,10 +58,14 @@ struct Point {
 // Rotors (rotations), translators and screws are all motors: rotor(angle, axis) and
 // translator(t) (motor.hpp) build them; identity_motor() is 1 (a value-initialised Motor is 0,
 // like every other element). X ↦ M X M̃ moves every grade (docs/conventions.md §7).
+//
+// Stored as the two halves of the dual quaternion q + ε c (quaternion.hpp), each ready for one
+// four-lane register: (s, e23, e31, e12) and (e0123, e01, e02, e03), the order klein stores
+// them in. Initialise by name (Motor<T>{.s = 1, .e01 = …}); `members` lists the basis order.
 template <class T>
 struct Motor {
   using scalar_type = T;
-  T s{}, e01{}, e02{}, e03{}, e12{}, e31{}, e23{}, e0123{};
+  T s{}, e23{}, e31{}, e12{}, e0123{}, e01{}, e02{}, e03{};
   static constexpr auto members = std::tuple{&Motor::s,   &Motor::e01, &Motor::e02, &Motor::e03,
                                              &Motor::e12, &Motor::e31, &Motor::e23, &Motor::e0123};
   /// The sandwich M X M̃ (same as apply(M, X), motor.hpp).
@@ -123,7 +127,7 @@ constexpr Line<T> line_through(Vec3<T> p, Vec3<T> d) {
 /// The identity motor 1.
 template <class T>
 constexpr Motor<T> identity_motor() {
-  return {T(1), T(0), T(0), T(0), T(0), T(0), T(0), T(0)};
+  return {.s = T(1)};
 }
 
 }  // namespace pgamesh::pga3

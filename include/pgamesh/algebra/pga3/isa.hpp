@@ -17,10 +17,10 @@
 
 namespace pgamesh::pga3::detail {
 
-/// Whether motor.hpp and join.hpp call the double motor product, point sandwich and join of three
-/// points out of line (below), so that they run AVX2 where the processor has it: on x86-64 builds
-/// without AVX. Builds with AVX inline the four-lane forms themselves; elsewhere the generic
-/// formulas stay inline.
+/// Whether motor.hpp and join.hpp call the double motor product, point and plane sandwiches and
+/// join of three points out of line (below), so that they run AVX2 where the processor has it: on
+/// x86-64 builds without AVX. Builds with AVX inline the four-lane forms themselves; elsewhere
+/// (aarch64) the generic formulas stay inline.
 inline constexpr bool kDoubleOutOfLine =
 #if defined(PGAMESH_PGA3_AVX2_VARIANT) && !defined(__AVX__)
     true;
@@ -44,14 +44,12 @@ void transform_planes(Isa isa, const double (&r)[3][4], const double (&u)[4], co
                       const double* b, const double* c, const double* d, double* oa, double* ob,
                       double* oc, double* od, std::size_t n) noexcept;
 
-/// The motor product: geometric_product_generic (motor.hpp) in the baseline variant,
-/// geometric_product_simd (the same bits) in the AVX2 variant.
+/// The motor product: geometric_product_generic (motor.hpp, the quaternion order) in the baseline
+/// variant, geometric_product_lanes in the AVX2 variant (equal to rounding).
 Motor<double> geometric_product(Isa isa, const Motor<double>& a, const Motor<double>& b) noexcept;
-/// The point sandwich: apply_generic, or apply_simd (the same bits), of motor.hpp.
+/// The point sandwich: apply_generic, or apply_lanes (motor.hpp).
 Point<double> apply(Isa isa, const Motor<double>& m, const Point<double>& x) noexcept;
-/// The plane sandwich: apply_generic, or apply_simd (the same values up to the sign of a zero).
-/// Not called by motor.hpp: out of line, the AVX2 variant is no faster than the inlined generic
-/// formula (docs/pga3.md "Speed"); here for the benchmark's side-by-side.
+/// The plane sandwich: apply_generic, or apply_lanes (motor.hpp).
 Plane<double> apply(Isa isa, const Motor<double>& m, const Plane<double>& p) noexcept;
 /// The join of three points: join(join(a, b), c) of join.hpp, or join_simd (the same values up to
 /// the sign of a zero).

@@ -154,7 +154,13 @@ constexpr auto operator|(const A& a, const B& b) -> decltype(inner(a, b)) {
 template <class T>
 constexpr Motor<T> geometric_product(const Plane<T>& a, const Plane<T>& b) {
   const Line<T> l = meet(a, b);
-  return {inner(a, b), l.e01, l.e02, l.e03, l.e12, l.e31, l.e23, T(0)};
+  return {.s = inner(a, b),
+          .e23 = l.e23,
+          .e31 = l.e31,
+          .e12 = l.e12,
+          .e01 = l.e01,
+          .e02 = l.e02,
+          .e03 = l.e03};
 }
 /// L1 L2 = (0, −l1) (0, −l2) + ε ((0, −l1)(0, m2) + (0, m1)(0, −l2)) (quaternion.hpp).
 template <class T>
@@ -162,13 +168,13 @@ constexpr Motor<T> geometric_product(const Line<T>& a, const Line<T>& b) {
   const detail::Quat<T> ea{T(0), -a.direction()}, eb{T(0), -b.direction()};
   const detail::Quat<T> ia{T(0), a.moment()}, ib{T(0), b.moment()};
   const detail::Quat<T> q = ea * eb, c = ea * ib + ia * eb;
-  return {q.w, c.v.x, c.v.y, c.v.z, -q.v.z, -q.v.y, -q.v.x, c.w};
+  return detail::motor_from(q, c);
 }
 /// v1 v2 = −w1 w2 + ε (w2 P1 − w1 P2) (quaternion.hpp): a translation by twice the distance.
 template <class T>
 constexpr Motor<T> geometric_product(const Point<T>& a, const Point<T>& b) {
   const Vec3<T> c = b.e123 * a.weighted() - a.e123 * b.weighted();
-  return {-a.e123 * b.e123, c.x, c.y, c.z, T(0), T(0), T(0), T(0)};
+  return {.s = -a.e123 * b.e123, .e01 = c.x, .e02 = c.y, .e03 = c.z};
 }
 /// a * b = geometric_product(a, b) for two planes.
 template <class T>

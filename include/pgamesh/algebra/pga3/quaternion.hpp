@@ -10,6 +10,7 @@
 // 16-component product.
 #pragma once
 
+#include "pgamesh/algebra/pga3/grades.hpp"
 #include "pgamesh/core/vec3.hpp"
 
 namespace pgamesh::pga3::detail {
@@ -51,4 +52,26 @@ constexpr Vec3<T> rotate(const Quat<T>& q, const Vec3<T>& x) {
   return (q.w * q.w - dot(q.v, q.v)) * x + T(2) * dot(q.v, x) * q.v + T(2) * q.w * cross(q.v, x);
 }
 
+/// q of M = q + ε c: (s, −(e23, e31, e12)).
+template <class T>
+constexpr Quat<T> real_part(const Motor<T>& m) {
+  return {m.s, {-m.e23, -m.e31, -m.e12}};
+}
+/// c of M = q + ε c: (e0123, (e01, e02, e03)).
+template <class T>
+constexpr Quat<T> dual_part(const Motor<T>& m) {
+  return {m.e0123, {m.e01, m.e02, m.e03}};
+}
+/// The motor q + ε c.
+template <class T>
+constexpr Motor<T> motor_from(const Quat<T>& q, const Quat<T>& c) {
+  return {.s = q.w,
+          .e23 = -q.v.x,
+          .e31 = -q.v.y,
+          .e12 = -q.v.z,
+          .e0123 = c.w,
+          .e01 = c.v.x,
+          .e02 = c.v.y,
+          .e03 = c.v.z};
+}
 }  // namespace pgamesh::pga3::detail
