@@ -416,14 +416,15 @@ BENCHMARK(BM_Klein_SandwichPlaneArray);
 
 // ---- the same answers --------------------------------------------------------------------------
 
-// Counts the coefficients where klein and pgamesh (float) differ by more than 1e-4 relative to
-// the larger magnitude involved (both compute in float; the inputs are of order 1).
+// Counts the coefficients where klein and pgamesh (float) differ by more than `tolerance` (1e-4)
+// relative to the larger magnitude involved (both compute in float; the inputs are of order 1).
 struct Agreement {
   const char* operation;
+  float tolerance = 1e-4f;
   int mismatches = 0;
   void expect(float ours, float theirs) {
     const float scale = std::fmax(1.0f, std::fmax(std::fabs(ours), std::fabs(theirs)));
-    if (!(std::fabs(ours - theirs) <= 1e-4f * scale)) ++mismatches;
+    if (!(std::fabs(ours - theirs) <= tolerance * scale)) ++mismatches;
   }
   void expect(const Motor<float>& m, const kln::motor& k) {
     expect(m.s, k.scalar()), expect(m.e01, k.e01()), expect(m.e02, k.e02());
@@ -456,8 +457,10 @@ bool same_answers() {
   const auto& in = inputs<float>();
   const auto& k = klein_inputs();
   Agreement mm{"motor x motor"}, sp{"sandwich of a point"}, sv{"sandwich of a plane"},
-      sl{"sandwich of a line"}, j3{"join of three points"}, ex{"exp"}, lg{"log"}, pa{"point array"},
-      va{"plane array"};
+      sl{"sandwich of a line"}, j3{"join of three points"}, ex{"exp"},
+      // klein's float log loses digits where the half-angle is near π/2 (the scalar part near 0):
+      // on input 527 (scalar part −2.8e−4) its moment is 2.5e−4 from the double log, ours 1e−6.
+      lg{"log", 1e-3f}, pa{"point array"}, va{"plane array"};
   std::vector<float> x(kRing), y(kRing), z(kRing), a(kRing), b(kRing), c(kRing), d(kRing);
   apply_to_points(in.motors[7], in.px, in.py, in.pz, x, y, z);
   apply_to_planes(in.motors[7], in.na, in.nb, in.nc, in.nd, a, b, c, d);

@@ -128,7 +128,22 @@ TYPED_TEST(Pga3ExpLog, TinyAnglesAndPureTranslations) {
   EXPECT_EQ(lt, line_from_plucker(Vec3<T>{}, T(-0.5) * t));
 }
 
-// Both branches of (cos θ − sinc θ)/θ² (series below θ = 1) against long double references:
+// exp's factors cos θ, sinc θ (series in θ² up to θ = π/2, libm beyond) against long double's
+// cosl and sinl, on both sides of π/2: within 2.3e−16 of the reference (one ulp of 1 is 2.2e−16).
+TEST(Pga3ExpLogFixed, ExpFactorsMatchExtendedPrecision) {
+  for (long double t = 0.0L; t < 3.2L; t += 0.0007L) {
+    const detail::ExpFactors<double> f = detail::exp_factors(double(t * t));
+    const long double theta = std::sqrt(static_cast<long double>(double(t * t)));
+    const long double sinc = theta == 0 ? 1.0L : std::sin(theta) / theta;
+    EXPECT_NEAR(f.cos, double(std::cos(theta)), 2.3e-16) << double(t);
+    EXPECT_NEAR(f.sinc, double(sinc), 2.3e-16) << double(t);
+  }
+  const detail::ExpFactors<float> g = detail::exp_factors(1.5f);
+  EXPECT_NEAR(g.cos, std::cos(std::sqrt(1.5)), 2e-7);
+  EXPECT_NEAR(g.sinc, std::sin(std::sqrt(1.5)) / std::sqrt(1.5), 2e-7);
+}
+
+// Both branches of (cos θ − sinc θ)/θ² (series below θ = π/2) against long double references:
 // the direct formula above θ = 0.05 (64-bit mantissa; the cancellation costs log10(1/θ²) < 3 of
 // its ~19 digits), 12 terms of the series below.
 TEST(Pga3ExpLogFixed, SeriesBranchMatchesExtendedPrecision) {

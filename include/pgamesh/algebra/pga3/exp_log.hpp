@@ -7,7 +7,9 @@
 // √(B A⁻¹).
 #pragma once
 
+#include <array>
 #include <cmath>
+#include <cstddef>
 #include <type_traits>
 
 #include "pgamesh/algebra/pga3/grades.hpp"
@@ -24,46 +26,72 @@ template <class T>
 T sinc(T theta) {
   return theta == T(0) ? T(1) : std::sin(theta) / theta;
 }
-/// (cos θ − sinc θ)/θ² from θ and the cos θ and sinc θ already at hand; below |θ| = 1 the Taylor
-/// series Σ_{k=1..10} (−1)^k 2k/(2k+1)! θ^(2k−2) (the direct form cancels for small θ: its error
-/// is about ε/θ²; the first omitted series term is below 4e−19 at θ = 1; float needs the first
-/// six terms). The coefficients are rounded once, at compile time, so the series costs a few
-/// multiply-adds and no division. For float and double both forms are computed and one is
-/// selected, without a branch: random angles straddle |θ| = 1 and a mispredicted branch cost more
-/// than the series.
-template <class T>
-T cos_minus_sinc_over_sq(T theta, T cos_theta, T sinc_theta) {
-  const T t2 = theta * theta;
-  // (−1)^k 2k/(2k+1)!, k = 1..10.
-  constexpr double kCoef[] = {-1.0 / 3.0,
-                              1.0 / 30.0,
-                              -1.0 / 840.0,
-                              1.0 / 45360.0,
-                              -1.0 / 3991680.0,
-                              1.0 / 518918400.0,
-                              -1.0 / 93405312000.0,
-                              1.0 / 22230464256000.0,
-                              -1.0 / 6758061133824000.0,
-                              1.0 / 2554547108585472000.0};
-  constexpr int kTerms = std::is_same_v<T, float> ? 6 : 10;
-  const auto series = [&] {
-    T sum = T(0);
-    for (int k = kTerms - 1; k >= 0; --k) sum = T(kCoef[k]) + t2 * sum;
-    return sum;
-  };
-  const bool small = std::abs(theta) < T(1);
-  if constexpr (std::is_floating_point_v<T>) {
-    // θ = 0 gives 0/0 in the unused direct form: harmless, it is not selected.
-    const T direct = (cos_theta - sinc_theta) / t2, approx = series();
-    return small ? approx : direct;
+
+/// Σ c_k x^k, summed in pairs (Estrin's scheme): (c_0 + x c_1) + x² (c_2 + x c_3) + …, so that
+/// N coefficients cost about log₂ N levels of multiply-adds instead of N in a row.
+template <class T, std::size_t N>
+constexpr T polynomial(const std::array<T, N>& c, T x) {
+  if constexpr (N == 1) {
+    return c[0];
   } else {
-    return small ? series() : (cos_theta - sinc_theta) / t2;
+    std::array<T, (N + 1) / 2> pairs{};
+    for (std::size_t k = 0; k < N / 2; ++k) pairs[k] = c[2 * k] + x * c[2 * k + 1];
+    if constexpr (N % 2 == 1) pairs[N / 2] = c[N - 1];
+    return polynomial(pairs, x * x);
   }
 }
-/// (cos θ − sinc θ)/θ².
+
+/// The Taylor coefficients in θ² of cos θ, sinc θ and (cos θ − sinc θ)/θ², k = 0 … N − 1:
+/// (−1)^k/(2k)!, (−1)^k/(2k+1)! and (−1)^(k+1) (2k+2)/(2k+3)!, rounded once to T.
+enum class Series { cos, sinc, cos_minus_sinc_over_sq };
+template <class T, std::size_t N>
+constexpr std::array<T, N> taylor_coefficients(Series series) {
+  std::array<T, N> c{};
+  long double factorial = 1;  // n! for the n of term k
+  int n = 0;
+  const int first = series == Series::cos ? 0 : series == Series::sinc ? 1 : 3;
+  for (std::size_t k = 0; k < N; ++k) {
+    while (n < first + 2 * int(k)) factorial *= ++n;
+    const long double sign = k % 2 == 0 ? 1 : -1;
+    c[k] = series == Series::cos_minus_sinc_over_sq ? T(-sign * (2 * k + 2) / factorial)
+                                                    : T(sign / factorial);
+  }
+  return c;
+}
+
+/// Half-angles θ up to π/2 (turns up to a half turn), where exp takes the series in θ²: 12 terms
+/// leave truncation errors below 2e−17 there (the first omitted term of cos θ, θ^24/24!, is
+/// 8e−20; of (cos θ − sinc θ)/θ², 3e−20), and the terms are at most 1.3 in magnitude.
+template <class T>
+inline constexpr T kSeriesBoundSq = T(2.4674011002723395);  // (π/2)²
+inline constexpr std::size_t kSeriesTerms = 12;
+
+/// (cos θ, sinc θ, (cos θ − sinc θ)/θ²) from θ², for θ² ≤ (π/2)²: series, no square root, no
+/// division, no sine or cosine.
+template <class T>
+struct ExpFactors {
+  T cos, sinc, g;
+};
+template <class T>
+ExpFactors<T> exp_factors_series(T t2) {
+  static constexpr auto kCos = taylor_coefficients<T, kSeriesTerms>(Series::cos);
+  static constexpr auto kSinc = taylor_coefficients<T, kSeriesTerms>(Series::sinc);
+  static constexpr auto kG = taylor_coefficients<T, kSeriesTerms>(Series::cos_minus_sinc_over_sq);
+  return {polynomial(kCos, t2), polynomial(kSinc, t2), polynomial(kG, t2)};
+}
+/// The same for any θ² (beyond (π/2)²: θ = √θ², one sine and cosine, two divisions).
+template <class T>
+ExpFactors<T> exp_factors(T t2) {
+  if (t2 <= kSeriesBoundSq<T>) return exp_factors_series(t2);
+  const T theta = std::sqrt(t2), cos_theta = std::cos(theta), sinc_theta = std::sin(theta) / theta;
+  return {cos_theta, sinc_theta, (cos_theta - sinc_theta) / t2};
+}
+
+/// (cos θ − sinc θ)/θ² (the direct form cancels for small θ, its error about ε/θ²: the series
+/// takes over below π/2).
 template <class T>
 T cos_minus_sinc_over_sq(T theta) {
-  return cos_minus_sinc_over_sq(theta, T(std::cos(theta)), sinc(theta));
+  return exp_factors(theta * theta).g;
 }
 }  // namespace detail
 
@@ -73,11 +101,9 @@ T cos_minus_sinc_over_sq(T theta) {
 template <class T>
 Motor<T> exp(const Line<T>& b) {
   const Vec3<T> l = b.direction(), m = b.moment();
-  const T theta = length(l);
-  // One sin and one cos of the same angle: the compiler makes them a single sincos call.
-  const T cos_theta = std::cos(theta), sin_theta = std::sin(theta);
-  const T sc = theta == T(0) ? T(1) : sin_theta / theta;
-  const T g = detail::cos_minus_sinc_over_sq(theta, cos_theta, sc);
+  // Half-angles up to π/2 take series in θ² (no square root, division or sine on the way).
+  const detail::ExpFactors<T> f = detail::exp_factors(dot(l, l));
+  const T cos_theta = f.cos, sc = f.sinc, g = f.g;
   const T lm = dot(l, m);      // = u·v with u = −l, v = m up to the sign absorbed below
   const Vec3<T> rot = sc * l;  // (e23, e31, e12) = −(u sinc θ)
   const Vec3<T> ideal = sc * m + (lm * g) * l;  // v sinc θ + u (u·v) g

@@ -8,15 +8,27 @@
 // linear operations (+, −, scaling) are written once for all of them (linear.hpp).
 #pragma once
 
+#include <cstddef>
 #include <tuple>
+#include <type_traits>
 
 #include "pgamesh/core/vec3.hpp"
 
 namespace pgamesh::pga3 {
 
+namespace detail {
+/// The alignment of Plane, Point and Motor: four coefficients (16 bytes in float, 32 in double)
+/// for float and double, so that the four-lane kernels' loads and stores (motor.hpp, join.hpp)
+/// never straddle a cache line. A motor 16 bytes off a line, on the stack or in an array, made
+/// one of its halves straddle it, and the double product took twice its time in half the runs
+/// of the benchmark (by where the allocator and the stack put the inputs).
+template <class T>
+inline constexpr std::size_t kLaneAlign = std::is_floating_point_v<T> ? 4 * sizeof(T) : alignof(T);
+}  // namespace detail
+
 // Grade 1: the plane a x + b y + c z + d = 0 as a e1 + b e2 + c e3 + d e0.
 template <class T>
-struct Plane {
+struct alignas(detail::kLaneAlign<T>) Plane {
   using scalar_type = T;
   T e0{}, e1{}, e2{}, e3{};
   /// The normal (a, b, c) = (e1, e2, e3) coefficients.
@@ -41,7 +53,7 @@ struct Line {
 
 // Grade 3: the point w·(x,y,z) = w e123 + w x e032 + w y e013 + w z e021; w = 0 is a direction.
 template <class T>
-struct Point {
+struct alignas(detail::kLaneAlign<T>) Point {
   using scalar_type = T;
   T e021{}, e013{}, e032{}, e123{};
   /// The weight w (e123 coefficient); 0 for a direction (ideal point).
@@ -63,7 +75,7 @@ struct Point {
 // four-lane register: (s, e23, e31, e12) and (e0123, e01, e02, e03), the order klein stores
 // them in. Initialise by name (Motor<T>{.s = 1, .e01 = …}); `members` lists the basis order.
 template <class T>
-struct Motor {
+struct alignas(detail::kLaneAlign<T>) Motor {
   using scalar_type = T;
   T s{}, e23{}, e31{}, e12{}, e0123{}, e01{}, e02{}, e03{};
   static constexpr auto members = std::tuple{&Motor::s,   &Motor::e01, &Motor::e02, &Motor::e03,

@@ -41,44 +41,46 @@ template <class T>
   v = reinterpret_cast<V4<T>>(reinterpret_cast<Bits>(v) ^ reinterpret_cast<Bits>(signs));
 }
 
-/// The motor product with lane-uniform sums, as klein sums it. With A = (s, e23, e31, e12) and
-/// C = (e0123, e01, e02, e03), the two halves as stored, q = (A_0, −A_1, −A_2, −A_3) and c = C,
-/// each of the Hamilton products q_a q_b, q_a c_b and c_a q_b is x_0 y + x_1 y1 + x_2 y2 + x_3 y3,
-/// summed left to right, where y1, y2, y3 are y's lanes in the orders (1, 0, 3, 2), (2, 3, 0, 1),
-/// (3, 2, 1, 0) with signs. Every sign (the Hamilton product's, q's, and the output's
-/// (e23, e31, e12) = −vec(q_a q_b)) is folded into one pattern per term and applied by
-/// flip_signs, as klein folds them into its shuffles. Other rounding than the quaternion order
-/// of geometric_product_generic (a few ulps; docs/pga3.md "Two summation orders").
+/// The motor product with lane-uniform sums: every lane does the same operations, on operands
+/// shuffled so that lane 0 holds the scalar (or e0123) coefficient and lanes 1, 2, 3 the three
+/// bivector coefficients, in cyclic order (i, j, k). With a = (s, e23, e31, e12) and
+/// b = (e0123, e01, e02, e03) of the left factor, c and d the same of the right one (the two halves
+/// as stored), the product is
+///   e_0 = a_0 c_0 − (a_1 c_1 + a_2 c_2 + a_3 c_3),
+///   e_i = a_0 c_i + a_i c_0 + a_k c_j − a_j c_k                       → (s, e23, e31, e12),
+///   f_0 = a_0 d_0 + b_0 c_0 + Σ_i (a_i d_i + b_i c_i),
+///   f_i = a_0 d_i + b_i c_0 + a_k d_j + b_k c_j − (a_i d_0 + b_0 c_i + a_j d_k + b_j c_k)
+///                                                                     → (e0123, e01, e02, e03)
+/// (the dual-quaternion product of quaternion.hpp written out). Each sum is a few products of two
+/// shuffled vectors, and a term subtracted in lanes 1, 2, 3 is added in lane 0 by one flip of lane
+/// 0's sign bit; the lane-0 products are placed so that the shuffles are shared: 14 shuffles,
+/// 12 multiplications, 10 additions, 2 sign flips. Other rounding than the quaternion order of
+/// geometric_product_generic (a few ulps; docs/pga3.md "Two summation orders").
 template <class T>
-inline Motor<T> geometric_product_lanes(const Motor<T>& a, const Motor<T>& b) {
-  V4<T> aA, aC, bA0, bC0;  // (s, e23, e31, e12), (e0123, e01, e02, e03)
-  load_motor_lanes<T>(a, aA, aC), load_motor_lanes<T>(b, bA0, bC0);
-  constexpr T P = T(0), N = -T(0);  // keep, flip
-  // b's halves in the orders of the four terms, (0, 1, 2, 3), (1, 0, 3, 2), (2, 3, 0, 1),
-  // (3, 2, 1, 0).
-  const V4<T> bA1 = PGAMESH_LANES(bA0, 1, 0, 3, 2), bC1 = PGAMESH_LANES(bC0, 1, 0, 3, 2);
-  const V4<T> bA2 = PGAMESH_LANES(bA0, 2, 3, 0, 1), bC2 = PGAMESH_LANES(bC0, 2, 3, 0, 1);
-  const V4<T> bA3 = PGAMESH_LANES(bA0, 3, 2, 1, 0), bC3 = PGAMESH_LANES(bC0, 3, 2, 1, 0);
-  // a's coefficients, each in every lane: A_0 … A_3 and C_0 … C_3.
-  const V4<T> aA0 = PGAMESH_LANES(aA, 0, 0, 0, 0), aA1 = PGAMESH_LANES(aA, 1, 1, 1, 1);
-  const V4<T> aA2 = PGAMESH_LANES(aA, 2, 2, 2, 2), aA3 = PGAMESH_LANES(aA, 3, 3, 3, 3);
-  const V4<T> aC0 = PGAMESH_LANES(aC, 0, 0, 0, 0), aC1 = PGAMESH_LANES(aC, 1, 1, 1, 1);
-  const V4<T> aC2 = PGAMESH_LANES(aC, 2, 2, 2, 2), aC3 = PGAMESH_LANES(aC, 3, 3, 3, 3);
-  // The signed b lanes of each term: q_a q_b (output signs folded in), q_a c_b, c_a q_b.
-  V4<T> q1 = bA1, q2 = bA2, q3 = bA3, x1 = bC1, x2 = bC2, x3 = bC3;
-  V4<T> y0 = bA0, y1 = bA1, y2 = bA2, y3 = bA3;
-  flip_signs<T>(q1, V4<T>{N, P, P, N}), flip_signs<T>(q2, V4<T>{N, N, P, P}),
-      flip_signs<T>(q3, V4<T>{N, P, N, P});
-  flip_signs<T>(x1, V4<T>{P, N, P, N}), flip_signs<T>(x2, V4<T>{P, N, N, P}),
-      flip_signs<T>(x3, V4<T>{P, P, N, N});
-  flip_signs<T>(y0, V4<T>{P, N, N, N}), flip_signs<T>(y1, V4<T>{P, P, P, N});
-  flip_signs<T>(y2, V4<T>{P, N, P, P}), flip_signs<T>(y3, V4<T>{P, P, N, P});
-  const V4<T> q = ((aA0 * bA0 + aA1 * q1) + aA2 * q2) + aA3 * q3;  // (s, e23, e31, e12)
-  const V4<T> x = ((aA0 * bC0 + aA1 * x1) + aA2 * x2) + aA3 * x3;  // q_a c_b
-  const V4<T> y = ((aC0 * y0 + aC1 * y1) + aC2 * y2) + aC3 * y3;   // c_a q_b
+inline Motor<T> geometric_product_lanes(const Motor<T>& left, const Motor<T>& right) {
+  V4<T> a, b, c, d;
+  load_motor_lanes<T>(left, a, b), load_motor_lanes<T>(right, c, d);
+  constexpr T P = T(0), N = -T(0);
+  const V4<T> lane0 = {N, P, P, P};  // flips lane 0
+  const V4<T> a0 = PGAMESH_LANES(a, 0, 0, 0, 0), a_i = PGAMESH_LANES(a, 1, 1, 2, 3);
+  const V4<T> a_k = PGAMESH_LANES(a, 2, 3, 1, 2), a_j = PGAMESH_LANES(a, 3, 2, 3, 1);
+  const V4<T> c0 = PGAMESH_LANES(c, 1, 0, 0, 0), c_j = PGAMESH_LANES(c, 2, 2, 3, 1);
+  const V4<T> c_k = PGAMESH_LANES(c, 3, 3, 1, 2);
+  // e: a_i c_0 + a_k c_j (lane 0: a_1 c_1 + a_2 c_2) with lane 0 negated, then − a_j c_k.
+  V4<T> t = a_i * c0 + a_k * c_j;
+  flip_signs<T>(t, lane0);
+  const V4<T> e = (a0 * c + t) - a_j * c_k;
+  // f: the added terms, then the subtracted ones (added in lane 0).
+  const V4<T> b_i = PGAMESH_LANES(b, 1, 1, 2, 3), b_j = PGAMESH_LANES(b, 3, 2, 3, 1);
+  const V4<T> b_k = PGAMESH_LANES(b, 2, 3, 1, 2), b0 = PGAMESH_LANES(b, 0, 0, 0, 0);
+  const V4<T> d0 = PGAMESH_LANES(d, 1, 0, 0, 0), d_j = PGAMESH_LANES(d, 2, 2, 3, 1);
+  const V4<T> d_k = PGAMESH_LANES(d, 3, 3, 1, 2);
+  const V4<T> added = (a0 * d + b_i * c0) + (a_k * d_j + b_k * c_j);
+  V4<T> subtracted = ((a_i * d0 + b0 * c) + a_j * d_k) + b_j * c_k;
+  flip_signs<T>(subtracted, lane0);
   Motor<T> out;
-  store_lanes<T>(out, 0, q);
-  store_lanes<T>(out, 4, x + y);  // (e0123, e01, e02, e03)
+  store_lanes<T>(out, 0, e);
+  store_lanes<T>(out, 4, added - subtracted);
   return out;
 }
 #endif
