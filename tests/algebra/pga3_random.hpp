@@ -72,7 +72,9 @@ pga3::Line<T> random_line(std::mt19937& r) {
 }
 template <class T>
 pga3::Point<T> random_point(std::mt19937& r) {
-  return {Num<T>::random(r), Num<T>::random(r), Num<T>::random(r), Num<T>::random(r)};
+  pga3::Point<T> p;
+  for (T* x : {&p.e021, &p.e013, &p.e032, &p.e123}) *x = Num<T>::random(r);  // basis order
+  return p;
 }
 template <class T>
 pga3::Motor<T> random_motor(std::mt19937& r) {

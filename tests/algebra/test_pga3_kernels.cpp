@@ -134,7 +134,7 @@ void expect_lane_sandwiches_match_generic(double tolerance) {
     const Plane<T> v = random_plane<T>(rng);
     const Point<T> got_x = detail::apply_lanes(m, x), want_x = detail::apply_generic(m, x);
     const Plane<T> got_v = detail::apply_lanes(m, v), want_v = detail::apply_generic(m, v);
-    const T *gx = &got_x.e021, *wx = &want_x.e021, *gv = &got_v.e0, *wv = &want_v.e0;
+    const T *gx = &got_x.e123, *wx = &want_x.e123, *gv = &got_v.e0, *wv = &want_v.e0;
     for (int k = 0; k < 4; ++k) {
       ASSERT_NEAR(double(gx[k]), double(wx[k]), tolerance) << i << " point " << k;
       ASSERT_NEAR(double(gv[k]), double(wv[k]), tolerance) << i << " plane " << k;

@@ -51,7 +51,7 @@ constexpr Line<T> to_line(const Multivector<T>& m) {
 /// ⟨A⟩_3 as a Point.
 template <class T>
 constexpr Point<T> to_point(const Multivector<T>& m) {
-  return {m[kE021], m[kE013], m[kE032], m[kE123]};
+  return {.e123 = m[kE123], .e032 = m[kE032], .e013 = m[kE013], .e021 = m[kE021]};
 }
 /// ⟨A⟩_0 + ⟨A⟩_2 + ⟨A⟩_4 as a Motor.
 template <class T>

@@ -52,10 +52,13 @@ struct Line {
 };
 
 // Grade 3: the point w·(x,y,z) = w e123 + w x e032 + w y e013 + w z e021; w = 0 is a direction.
+// Stored weight first, (e123, e032, e013, e021) = (w, w x, w y, w z), so that the coordinates sit
+// in the lanes of the motor halves' (e23, e31, e12); initialise by name. `members` lists the
+// basis order.
 template <class T>
 struct alignas(detail::kLaneAlign<T>) Point {
   using scalar_type = T;
-  T e021{}, e013{}, e032{}, e123{};
+  T e123{}, e032{}, e013{}, e021{};
   /// The weight w (e123 coefficient); 0 for a direction (ideal point).
   constexpr T weight() const { return e123; }
   /// w·(x, y, z) = (e032, e013, e021).
@@ -93,27 +96,27 @@ struct alignas(detail::kLaneAlign<T>) Motor {
 /// The point (x, y, z) = e123 + x e032 + y e013 + z e021 (docs/conventions.md §2, paper eq. 3.8).
 template <class T>
 constexpr Point<T> point(T x, T y, T z) {
-  return {z, y, x, T(1)};
+  return {.e123 = T(1), .e032 = x, .e013 = y, .e021 = z};
 }
 /// The point at position v (weight 1).
 template <class T>
 constexpr Point<T> point(Vec3<T> v) {
-  return {v.z, v.y, v.x, T(1)};
+  return {.e123 = T(1), .e032 = v.x, .e013 = v.y, .e021 = v.z};
 }
 /// The ideal point (direction) (x, y, z): weight 0. Motors rotate it and do not translate it.
 template <class T>
 constexpr Point<T> direction(T x, T y, T z) {
-  return {z, y, x, T(0)};
+  return {.e123 = T(0), .e032 = x, .e013 = y, .e021 = z};
 }
 /// The ideal point (direction) v: weight 0.
 template <class T>
 constexpr Point<T> direction(Vec3<T> v) {
-  return {v.z, v.y, v.x, T(0)};
+  return {.e123 = T(0), .e032 = v.x, .e013 = v.y, .e021 = v.z};
 }
 /// The origin o = e123 (= e0*, paper §3).
 template <class T>
 constexpr Point<T> origin() {
-  return {T(0), T(0), T(0), T(1)};
+  return {.e123 = T(1)};
 }
 /// The plane a x + b y + c z + d = 0 as a e1 + b e2 + c e3 + d e0 (docs/conventions.md §2).
 template <class T>

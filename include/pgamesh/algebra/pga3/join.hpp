@@ -50,23 +50,25 @@ constexpr T join(const Point<T>& v, const Plane<T>& p) {
 namespace detail {
 #ifdef PGAMESH_PGA3_SIMD
 /// join(join(a, b), c) on four-lane vectors, summed in the same order (the same bits, up to the
-/// sign of a zero). The points' lanes (e021, e013, e032, e123) hold (z, y, x, w): in that order the
-/// cross product's j and k lanes are (2, 0, 1) and (1, 2, 0).
+/// sign of a zero). The points' lanes (e123, e032, e013, e021) hold (w, x, y, z), and the
+/// plane's (e0, e1, e2, e3) take lanes 1, 2, 3 as they come.
 template <class T>
 inline Plane<T> join_simd(const Point<T>& a, const Point<T>& b, const Point<T>& c) {
-  V4<T> va, vb, vc;
+  V4<T> va, vb, vc;  // (w, x, y, z) each
   load_lanes<T>(a, 0, va), load_lanes<T>(b, 0, vb), load_lanes<T>(c, 0, vc);
-  const V4<T> d = PGAMESH_LANES(va, 3, 3, 3, 3) * vb - PGAMESH_LANES(vb, 3, 3, 3, 3) * va;
-  const V4<T> m = PGAMESH_LANES(va, 2, 0, 1, 3) * PGAMESH_LANES(vb, 1, 2, 0, 3) -
-                  PGAMESH_LANES(va, 1, 2, 0, 3) * PGAMESH_LANES(vb, 2, 0, 1, 3);
-  const V4<T> n = (PGAMESH_LANES(d, 2, 0, 1, 3) * PGAMESH_LANES(vc, 1, 2, 0, 3) -
-                   PGAMESH_LANES(d, 1, 2, 0, 3) * PGAMESH_LANES(vc, 2, 0, 1, 3)) +
-                  PGAMESH_LANES(vc, 3, 3, 3, 3) * m;
-  const V4<T> mp = m * vc;  // (m_z p_z, m_y p_y, m_x p_x, ·)
-  const V4<T> e0 = -((PGAMESH_LANES(mp, 2, 2, 2, 2) + PGAMESH_LANES(mp, 1, 1, 1, 1)) +
-                     PGAMESH_LANES(mp, 0, 0, 0, 0));
+  // Lanes 1, 2, 3 are x, y, z; their next and previous coordinates are lanes (2, 3, 1) and
+  // (3, 1, 2).
+  const V4<T> d = PGAMESH_LANES(va, 0, 0, 0, 0) * vb - PGAMESH_LANES(vb, 0, 0, 0, 0) * va;
+  const V4<T> m = PGAMESH_LANES(va, 0, 2, 3, 1) * PGAMESH_LANES(vb, 0, 3, 1, 2) -
+                  PGAMESH_LANES(va, 0, 3, 1, 2) * PGAMESH_LANES(vb, 0, 2, 3, 1);
+  const V4<T> n = (PGAMESH_LANES(d, 0, 2, 3, 1) * PGAMESH_LANES(vc, 0, 3, 1, 2) -
+                   PGAMESH_LANES(d, 0, 3, 1, 2) * PGAMESH_LANES(vc, 0, 2, 3, 1)) +
+                  PGAMESH_LANES(vc, 0, 0, 0, 0) * m;
+  const V4<T> mp = m * vc;  // (·, m_x p_x, m_y p_y, m_z p_z)
+  const V4<T> e0 = -((PGAMESH_LANES(mp, 1, 1, 1, 1) + PGAMESH_LANES(mp, 2, 2, 2, 2)) +
+                     PGAMESH_LANES(mp, 3, 3, 3, 3));
   Plane<T> out;
-  store_lanes<T>(out, 0, PGAMESH_LANES2(e0, n, 0, 6, 5, 4));
+  store_lanes<T>(out, 0, PGAMESH_LANES2(n, e0, 4, 1, 2, 3));
   return out;
 }
 #endif

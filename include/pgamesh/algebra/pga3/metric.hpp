@@ -51,7 +51,7 @@ T distance(const Line<T>& a, const Line<T>& b) {
     return std::abs(join(a, b)) / cr;
   // The point of L2 nearest the origin, lb × mb / |lb|², as a weighted point (weight |lb|²).
   const Vec3<T> q = cross(lb, b.moment());
-  return distance(a, Point<T>{q.z, q.y, q.x, dot(lb, lb)});
+  return distance(a, Point<T>{.e123 = dot(lb, lb), .e032 = q.x, .e013 = q.y, .e021 = q.z});
 }
 
 /// Angle between two planes (between their normals), in [0, π].

@@ -185,7 +185,7 @@ constexpr Point<T> apply_generic(const Motor<T>& m, const Point<T>& x) {
   const T w = x.e123;
   const Vec3<T> t = T(2) * (c.w * q.v - q.w * c.v + cross(c.v, q.v));
   const Vec3<T> p = rotate(q, x.weighted()) + w * t;
-  return {p.z, p.y, p.x, dot4(q, q) * w};
+  return {.e123 = dot4(q, q) * w, .e032 = p.x, .e013 = p.y, .e021 = p.z};
 }
 /// M p M̃ for a plane, any scalar type (apply below).
 template <class T>
@@ -207,26 +207,27 @@ constexpr Plane<T> apply_generic(const Motor<T>& m, const Plane<T>& p) {
 ///   R_in = 2 (v_i v_n − q_w v_p),  R_ip = 2 (v_i v_p + q_w v_n),
 /// and t_i = 2 ((c_w v_i − q_w c_i) + (c_n v_p − c_p v_n)), so that every lane sums the same
 /// pattern: P'_i = ((R_ii P_i + R_in P_n) + R_ip P_p) + w t_i; the weight is (q_w² + v·v) w.
-/// Lanes in the point's storage order (z, y, x, w): n and p are lanes (2, 0, 1) and (1, 2, 0).
+/// The point's lanes (w, x, y, z) match the motor halves' (s, e23, e31, e12) = (q_w, −v) and
+/// (e0123, e01, e02, e03) = (c_w, c), so the halves are used as loaded (u = −v: the signs are
+/// folded into the formulas); n and p are lanes (2, 3, 1) and (3, 1, 2), and lane 0 sums
+/// (q_w² + u_3²) + (u_1² + u_2²) for the weight.
 template <class T>
 inline Point<T> apply_lanes(const Motor<T>& mo, const Point<T>& x) {
-  V4<T> lo, hi, pt;  // (s, e23, e31, e12), (e0123, e01, e02, e03), (e021, e013, e032, e123)
-  load_motor_lanes<T>(mo, lo, hi), load_lanes<T>(x, 0, pt);
-  const V4<T> v = -PGAMESH_LANES(lo, 3, 2, 1, 0);  // (z, y, x, ·) of q_v
-  const V4<T> c = PGAMESH_LANES(hi, 3, 2, 1, 0);   // (z, y, x, ·) of c_v
-  const V4<T> qw = PGAMESH_LANES(lo, 0, 0, 0, 0), cw = PGAMESH_LANES(hi, 0, 0, 0, 0);
-  const V4<T> w = PGAMESH_LANES(pt, 3, 3, 3, 3);
-  const V4<T> vn = PGAMESH_LANES(v, 2, 0, 1, 3), vp = PGAMESH_LANES(v, 1, 2, 0, 3);
-  const V4<T> cn = PGAMESH_LANES(c, 2, 0, 1, 3), cp = PGAMESH_LANES(c, 1, 2, 0, 3);
-  const V4<T> pn = PGAMESH_LANES(pt, 2, 0, 1, 3), pp = PGAMESH_LANES(pt, 1, 2, 0, 3);
-  const V4<T> vv = v * v;
-  const V4<T> a = qw * qw + vv, b = PGAMESH_LANES(vv, 2, 0, 1, 3) + PGAMESH_LANES(vv, 1, 2, 0, 3);
+  V4<T> u, c, pt;  // (q_w, −v), (c_w, c), (w, x, y, z)
+  load_motor_lanes<T>(mo, u, c), load_lanes<T>(x, 0, pt);
+  const V4<T> qw = PGAMESH_LANES(u, 0, 0, 0, 0), cw = PGAMESH_LANES(c, 0, 0, 0, 0);
+  const V4<T> w = PGAMESH_LANES(pt, 0, 0, 0, 0);
+  const V4<T> ui = PGAMESH_LANES(u, 3, 1, 2, 3);  // lane 0: u_3, for the weight
+  const V4<T> un = PGAMESH_LANES(u, 1, 2, 3, 1), up = PGAMESH_LANES(u, 2, 3, 1, 2);
+  const V4<T> cn = PGAMESH_LANES(c, 0, 2, 3, 1), cp = PGAMESH_LANES(c, 0, 3, 1, 2);
+  const V4<T> pn = PGAMESH_LANES(pt, 0, 2, 3, 1), pp = PGAMESH_LANES(pt, 0, 3, 1, 2);
+  const V4<T> a = qw * qw + ui * ui, b = un * un + up * up;
   const V4<T> rii = a - b, weight = (a + b) * w;  // weight: lane 0 holds (q_w² + v·v) w
-  const V4<T> rin = v * vn - qw * vp, rip = v * vp + qw * vn;
-  const V4<T> t = (cw * v - qw * c) + (cn * vp - cp * vn);
+  const V4<T> rin = u * un + qw * up, rip = u * up - qw * un;
+  const V4<T> t = (cp * un - cn * up) - (cw * u + qw * c);
   const V4<T> r = ((rii * pt + (rin + rin) * pn) + (rip + rip) * pp) + (w + w) * t;
   Point<T> out;
-  store_lanes<T>(out, 0, PGAMESH_LANES2(r, weight, 0, 1, 2, 4));
+  store_lanes<T>(out, 0, PGAMESH_LANES2(r, weight, 4, 1, 2, 3));
   return out;
 }
 

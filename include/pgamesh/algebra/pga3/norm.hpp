@@ -73,7 +73,7 @@ template <class T>
 Point<T> normalized(const Point<T>& v) {
   const T w = v.e123 != T(0) ? v.e123 : ideal_norm(v);
   if (w == T(0)) return v;
-  return {v.e021 / w, v.e013 / w, v.e032 / w, v.e123 / w};
+  return {.e123 = v.e123 / w, .e032 = v.e032 / w, .e013 = v.e013 / w, .e021 = v.e021 / w};
 }
 
 }  // namespace pgamesh::pga3

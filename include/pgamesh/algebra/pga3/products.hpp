@@ -28,7 +28,7 @@ template <class T>
 constexpr Point<T> meet(const Line<T>& l, const Plane<T>& p) {
   const Vec3<T> n = p.normal(), dir = l.direction();
   const Vec3<T> w = cross(n, l.moment()) - p.e0 * dir;
-  return {w.z, w.y, w.x, dot(n, dir)};
+  return {.e123 = dot(n, dir), .e032 = w.x, .e013 = w.y, .e021 = w.z};
 }
 /// p ∧ L = L ∧ p (grades 1 and 2 commute under ∧: (−1)^(1·2) = 1).
 template <class T>
@@ -198,7 +198,7 @@ constexpr Motor<T> operator*(const Point<T>& a, const Point<T>& b) {
 /// p*: e0 → e123, e1 → e032, e2 → e013, e3 → e021.
 template <class T>
 constexpr Point<T> dual(const Plane<T>& p) {
-  return {p.e3, p.e2, p.e1, p.e0};
+  return {.e123 = p.e0, .e032 = p.e1, .e013 = p.e2, .e021 = p.e3};
 }
 /// v*: e021 → −e3, e013 → −e2, e032 → −e1, e123 → −e0.
 template <class T>
@@ -213,7 +213,7 @@ constexpr Line<T> dual(const Line<T>& l) {
 /// p^(−*): e0 → −e123, e1 → −e032, e2 → −e013, e3 → −e021.
 template <class T>
 constexpr Point<T> undual(const Plane<T>& p) {
-  return {-p.e3, -p.e2, -p.e1, -p.e0};
+  return {.e123 = -p.e0, .e032 = -p.e1, .e013 = -p.e2, .e021 = -p.e3};
 }
 /// v^(−*): e021 → e3, e013 → e2, e032 → e1, e123 → e0.
 template <class T>
