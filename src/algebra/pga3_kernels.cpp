@@ -95,13 +95,13 @@ void transform_planes(Isa isa, const double (&r)[3][4], const double (&u)[4], co
   transform_planes_loop(r, u, a, b, c, d, oa, ob, oc, od, n);
 }
 Motor<double> geometric_product(Isa isa, const Motor<double>& a, const Motor<double>& b) noexcept {
-  return use_avx2(isa) ? geometric_product_avx2(a, b) : geometric_product_generic(a, b);
+  return use_avx2(isa) ? geometric_product_avx2(a, b) : quaternion_order::geometric_product(a, b);
 }
 Point<double> apply(Isa isa, const Motor<double>& m, const Point<double>& x) noexcept {
-  return use_avx2(isa) ? apply_avx2(m, x) : apply_generic(m, x);
+  return use_avx2(isa) ? apply_avx2(m, x) : quaternion_order::apply(m, x);
 }
 Plane<double> apply(Isa isa, const Motor<double>& m, const Plane<double>& p) noexcept {
-  return use_avx2(isa) ? apply_avx2(m, p) : apply_generic(m, p);
+  return use_avx2(isa) ? apply_avx2(m, p) : quaternion_order::apply(m, p);
 }
 
 Plane<double> join(Isa isa, const Point<double>& a, const Point<double>& b,

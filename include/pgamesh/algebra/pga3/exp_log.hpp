@@ -66,12 +66,12 @@ template <class T>
 inline constexpr T kSeriesBoundSq = T(2.4674011002723395);  // (π/2)²
 inline constexpr std::size_t kSeriesTerms = 12;
 
-/// (cos θ, sinc θ, (cos θ − sinc θ)/θ²) from θ², for θ² ≤ (π/2)²: series, no square root, no
-/// division, no sine or cosine.
+/// The factors of exp (the header's formula): cos θ, sinc θ and g = (cos θ − sinc θ)/θ².
 template <class T>
 struct ExpFactors {
   T cos, sinc, g;
 };
+/// ExpFactors from θ², for θ² ≤ (π/2)²: series, no square root, no division, no sine or cosine.
 template <class T>
 ExpFactors<T> exp_factors_series(T t2) {
   static constexpr auto kCos = taylor_coefficients<T, kSeriesTerms>(Series::cos);
@@ -83,7 +83,7 @@ ExpFactors<T> exp_factors_series(T t2) {
 template <class T>
 ExpFactors<T> exp_factors(T t2) {
   if (t2 <= kSeriesBoundSq<T>) return exp_factors_series(t2);
-  const T theta = std::sqrt(t2), cos_theta = std::cos(theta), sinc_theta = std::sin(theta) / theta;
+  const T theta = std::sqrt(t2), cos_theta = std::cos(theta), sinc_theta = sinc(theta);
   return {cos_theta, sinc_theta, (cos_theta - sinc_theta) / t2};
 }
 

@@ -44,12 +44,12 @@ void transform_planes(Isa isa, const double (&r)[3][4], const double (&u)[4], co
                       const double* b, const double* c, const double* d, double* oa, double* ob,
                       double* oc, double* od, std::size_t n) noexcept;
 
-/// The motor product: geometric_product_generic (motor.hpp, the quaternion order) in the baseline
+/// The motor product: quaternion_order::geometric_product (motor.hpp) in the baseline
 /// variant, geometric_product_lanes in the AVX2 variant (equal to rounding).
 Motor<double> geometric_product(Isa isa, const Motor<double>& a, const Motor<double>& b) noexcept;
-/// The point sandwich: apply_generic, or apply_lanes (motor.hpp).
+/// The point sandwich: quaternion_order::apply, or apply_lanes (motor.hpp).
 Point<double> apply(Isa isa, const Motor<double>& m, const Point<double>& x) noexcept;
-/// The plane sandwich: apply_generic, or apply_lanes (motor.hpp).
+/// The plane sandwich: quaternion_order::apply, or apply_lanes (motor.hpp).
 Plane<double> apply(Isa isa, const Motor<double>& m, const Plane<double>& p) noexcept;
 /// The join of three points: join(join(a, b), c) of join.hpp, or join_simd (the same values up to
 /// the sign of a zero).

@@ -13,15 +13,24 @@
 
 namespace pgamesh::pga3 {
 
-namespace detail {
+/// The motor product and the point and plane sandwiches summed in the order of the
+/// dual-quaternion formulas (quaternion.hpp; the products q_a q_b, q_a c_b + c_a q_b and the
+/// rotation q x q* as dot and cross products), for any scalar type. Their values equal the
+/// operators' to rounding; they are the forms the mass properties and the tank's attitude are
+/// computed with, whose bits stay the same from one version to the next (docs/pga3.md "Two
+/// summation orders"), and the operators' forms for other scalar types and constant evaluation.
+namespace quaternion_order {
 /// The geometric product A B of two motors, (q_a + ε c_a)(q_b + ε c_b) =
-/// q_a q_b + ε (q_a c_b + c_a q_b), for any scalar type.
+/// q_a q_b + ε (q_a c_b + c_a q_b) (docs/conventions.md §7).
 template <class T>
-constexpr Motor<T> geometric_product_generic(const Motor<T>& a, const Motor<T>& b) {
+constexpr Motor<T> geometric_product(const Motor<T>& a, const Motor<T>& b) {
+  using detail::dual_part, detail::real_part;
   const auto qa = real_part(a), qb = real_part(b), ca = dual_part(a), cb = dual_part(b);
-  return motor_from(qa * qb, qa * cb + ca * qb);
+  return detail::motor_from(qa * qb, qa * cb + ca * qb);
 }
+}  // namespace quaternion_order
 
+namespace detail {
 #ifdef PGAMESH_PGA3_SIMD
 /// A motor's eight coefficients in two four-lane vectors, in its storage order: the dual
 /// quaternion's halves lo = (s, e23, e31, e12) (q with its vector part negated) and
@@ -51,11 +60,12 @@ template <class T>
 ///   f_0 = a_0 d_0 + b_0 c_0 + Σ_i (a_i d_i + b_i c_i),
 ///   f_i = a_0 d_i + b_i c_0 + a_k d_j + b_k c_j − (a_i d_0 + b_0 c_i + a_j d_k + b_j c_k)
 ///                                                                     → (e0123, e01, e02, e03)
-/// (the dual-quaternion product of quaternion.hpp written out). Each sum is a few products of two
+/// (the dual-quaternion product of quaternion.hpp written out, motors as in docs/conventions.md
+/// §7). Each sum is a few products of two
 /// shuffled vectors, and a term subtracted in lanes 1, 2, 3 is added in lane 0 by one flip of lane
 /// 0's sign bit; the lane-0 products are placed so that the shuffles are shared: 14 shuffles,
 /// 12 multiplications, 10 additions, 2 sign flips. Other rounding than the quaternion order of
-/// geometric_product_generic (a few ulps; docs/pga3.md "Two summation orders").
+/// quaternion_order::geometric_product (a few ulps; docs/pga3.md "Two summation orders").
 template <class T>
 inline Motor<T> geometric_product_lanes(const Motor<T>& left, const Motor<T>& right) {
   V4<T> a, b, c, d;
@@ -101,7 +111,7 @@ constexpr Motor<T> geometric_product(const Motor<T>& a, const Motor<T>& b) {
       return detail::geometric_product_lanes(a, b);
 #endif
   }
-  return detail::geometric_product_generic(a, b);
+  return quaternion_order::geometric_product(a, b);
 }
 /// A * B = geometric_product(A, B): the motion B followed by A.
 template <class T>
@@ -177,19 +187,21 @@ constexpr Motor<T> translator(Vec3<T> t) {
   return {.s = T(1), .e01 = -t.x / 2, .e02 = -t.y / 2, .e03 = -t.z / 2};
 }
 
-namespace detail {
-/// M X M̃ for a point, any scalar type (apply below).
+namespace quaternion_order {
+/// M X M̃ for a point (apply below).
 template <class T>
-constexpr Point<T> apply_generic(const Motor<T>& m, const Point<T>& x) {
+constexpr Point<T> apply(const Motor<T>& m, const Point<T>& x) {
+  using detail::dual_part, detail::real_part, detail::rotate;
   const auto q = real_part(m), c = dual_part(m);
   const T w = x.e123;
   const Vec3<T> t = T(2) * (c.w * q.v - q.w * c.v + cross(c.v, q.v));
   const Vec3<T> p = rotate(q, x.weighted()) + w * t;
   return {.e123 = dot4(q, q) * w, .e032 = p.x, .e013 = p.y, .e021 = p.z};
 }
-/// M p M̃ for a plane, any scalar type (apply below).
+/// M p M̃ for a plane (apply below).
 template <class T>
-constexpr Plane<T> apply_generic(const Motor<T>& m, const Plane<T>& p) {
+constexpr Plane<T> apply(const Motor<T>& m, const Plane<T>& p) {
+  using detail::dual_part, detail::real_part, detail::rotate;
   const auto q = real_part(m), c = dual_part(m);
   const Vec3<T> n = p.normal();
   const Vec3<T> rn = rotate(q, n);
@@ -197,12 +209,14 @@ constexpr Plane<T> apply_generic(const Motor<T>& m, const Plane<T>& p) {
       dot4(q, q) * p.e0 + T(2) * (-c.w * dot(q.v, n) + q.w * dot(n, c.v) + dot(cross(q.v, n), c.v));
   return {d, rn.x, rn.y, rn.z};
 }
+}  // namespace quaternion_order
 
+namespace detail {
 #ifdef PGAMESH_PGA3_SIMD
-/// The point sandwich with lane-uniform sums (to rounding apply_generic, whose sums are grouped
-/// in the quaternion order): the same M X M̃ (motors as in docs/conventions.md §7, points §2, in the
-/// dual-quaternion form of quaternion.hpp). With q_v = v, c_v = c and lane i's next and previous
-/// coordinates n, p (x → y → z → x), rotate(q, P) (quaternion.hpp) as a matrix,
+/// The point sandwich with lane-uniform sums (to rounding quaternion_order::apply, whose sums are
+/// grouped in the quaternion order): the same M X M̃ (motors as in docs/conventions.md §7, points
+/// §2, in the dual-quaternion form of quaternion.hpp). With q_v = v, c_v = c and lane i's next and
+/// previous coordinates n, p (x → y → z → x), rotate(q, P) (quaternion.hpp) as a matrix,
 ///   R_ii = (q_w² + v_i²) − (v_n² + v_p²),
 ///   R_in = 2 (v_i v_n − q_w v_p),  R_ip = 2 (v_i v_p + q_w v_n),
 /// and t_i = 2 ((c_w v_i − q_w c_i) + (c_n v_p − c_p v_n)), so that every lane sums the same
@@ -231,11 +245,11 @@ inline Point<T> apply_lanes(const Motor<T>& mo, const Point<T>& x) {
   return out;
 }
 
-/// The plane sandwich with lane-uniform sums (to rounding apply_generic), M p M̃
+/// The plane sandwich with lane-uniform sums (to rounding quaternion_order::apply), M p M̃
 /// (docs/conventions.md §7, planes §2): the normal n' = R n with apply_lanes' matrix R, and the e0
-/// coefficient |q|² d + 2 Σ_i ((q_w c_i − c_w v_i) n_i + (v × n)_i c_i), apply_generic's 2 (−c_w
-/// (v·n) + q_w (n·c) + (v × n)·c) summed lane by lane. Lanes in the plane's storage order (e0, e1,
-/// e2, e3): n and p of lanes 1, 2, 3 are lanes (2, 3, 1) and (3, 1, 2).
+/// coefficient |q|² d + 2 Σ_i ((q_w c_i − c_w v_i) n_i + (v × n)_i c_i), quaternion_order::apply's
+/// 2 (−c_w (v·n) + q_w (n·c) + (v × n)·c) summed lane by lane. Lanes in the plane's storage order
+/// (e0, e1, e2, e3): n and p of lanes 1, 2, 3 are lanes (2, 3, 1) and (3, 1, 2).
 template <class T>
 inline Plane<T> apply_lanes(const Motor<T>& mo, const Plane<T>& pl) {
   V4<T> lo, hi, n;  // (s, e23, e31, e12), (e0123, e01, e02, e03), (e0, e1, e2, e3)
@@ -274,7 +288,7 @@ constexpr Point<T> apply(const Motor<T>& m, const Point<T>& x) {
       return detail::apply_lanes(m, x);
 #endif
   }
-  return detail::apply_generic(m, x);
+  return quaternion_order::apply(m, x);
 }
 
 /// M p M̃ for a plane p = n + d e0: normal q n q*, e0 coefficient |q|² d + 2 Re(q n c*)
@@ -290,7 +304,7 @@ constexpr Plane<T> apply(const Motor<T>& m, const Plane<T>& p) {
       return detail::apply_lanes(m, p);
 #endif
   }
-  return detail::apply_generic(m, p);
+  return quaternion_order::apply(m, p);
 }
 
 /// M L M̃ for a line L = (0, −l) + ε (0, m): direction q l q*, moment q m q* − 2 vec(q l c*)
@@ -310,25 +324,5 @@ template <class T>
 constexpr Motor<T> apply(const Motor<T>& m, const Motor<T>& n) {
   return m * n * reverse(m);
 }
-
-/// The motor product and the point and plane sandwiches summed in the order of the
-/// dual-quaternion formulas (quaternion.hpp; the products q_a q_b, q_a c_b + c_a q_b and the
-/// rotation q x q* as dot and cross products). Their values equal the operators' to rounding; they
-/// are the forms the mass properties and the tank's attitude are computed with, whose bits stay
-/// the same from one version to the next (docs/pga3.md "Two summation orders").
-namespace quaternion_order {
-template <class T>
-constexpr Motor<T> geometric_product(const Motor<T>& a, const Motor<T>& b) {
-  return detail::geometric_product_generic(a, b);
-}
-template <class T>
-constexpr Point<T> apply(const Motor<T>& m, const Point<T>& x) {
-  return detail::apply_generic(m, x);
-}
-template <class T>
-constexpr Plane<T> apply(const Motor<T>& m, const Plane<T>& p) {
-  return detail::apply_generic(m, p);
-}
-}  // namespace quaternion_order
 
 }  // namespace pgamesh::pga3
