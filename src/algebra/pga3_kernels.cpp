@@ -35,11 +35,11 @@ bool detect_avx2() noexcept {
   if ((xcr0 & 6u) != 6u) return false;
   return __get_cpuid_count(7, 0, &a, &b, &c, &d) && (b & bit_AVX2);
 }
-// Zero (false, the baseline) until dynamic initialisation has run, so an early call is safe.
-const bool kRunsAvx2 = detect_avx2();
 #else
 #define PGAMESH_TARGET_AVX2
-constexpr bool kRunsAvx2 = false;
+bool detect_avx2() noexcept {
+  return false;
+}
 #endif
 
 [[PGAMESH_TARGET_AVX2]] void transform_points_avx2(const double (&r)[3][4], const double* x,
@@ -54,24 +54,33 @@ constexpr bool kRunsAvx2 = false;
                                                    std::size_t n) {
   transform_planes_loop(r, u, a, b, c, d, oa, ob, oc, od, n);
 }
-[[PGAMESH_TARGET_AVX2, gnu::flatten]] Motor<double> geometric_product_avx2(const Motor<double>& a,
-                                                                           const Motor<double>& b) {
+}  // namespace
+
+// Zero (false, the baseline) until dynamic initialisation has run, so an early call is safe.
+const bool kRunsAvx2 = detect_avx2();
+
+namespace avx2 {
+[[PGAMESH_TARGET_AVX2, gnu::flatten]] Motor<double> geometric_product(
+    const Motor<double>& a, const Motor<double>& b) noexcept {
   return geometric_product_lanes(a, b);
 }
-[[PGAMESH_TARGET_AVX2, gnu::flatten]] Point<double> apply_avx2(const Motor<double>& m,
-                                                               const Point<double>& x) {
+[[PGAMESH_TARGET_AVX2, gnu::flatten]] Point<double> apply(const Motor<double>& m,
+                                                          const Point<double>& x) noexcept {
   return apply_lanes(m, x);
 }
-[[PGAMESH_TARGET_AVX2, gnu::flatten]] Plane<double> apply_avx2(const Motor<double>& m,
-                                                               const Plane<double>& p) {
+[[PGAMESH_TARGET_AVX2, gnu::flatten]] Plane<double> apply(const Motor<double>& m,
+                                                          const Plane<double>& p) noexcept {
   return apply_lanes(m, p);
 }
-[[PGAMESH_TARGET_AVX2, gnu::flatten]] Plane<double> join_avx2(const Point<double>& a,
-                                                              const Point<double>& b,
-                                                              const Point<double>& c) {
+[[PGAMESH_TARGET_AVX2, gnu::flatten]] Plane<double> join(const Point<double>& a,
+                                                         const Point<double>& b,
+                                                         const Point<double>& c) noexcept {
   return join_simd(a, b, c);
 }
+}  // namespace avx2
 #undef PGAMESH_TARGET_AVX2
+
+namespace {
 
 bool use_avx2(Isa isa) noexcept {
   return isa == Isa::avx2 && kRunsAvx2;
@@ -95,18 +104,18 @@ void transform_planes(Isa isa, const double (&r)[3][4], const double (&u)[4], co
   transform_planes_loop(r, u, a, b, c, d, oa, ob, oc, od, n);
 }
 Motor<double> geometric_product(Isa isa, const Motor<double>& a, const Motor<double>& b) noexcept {
-  return use_avx2(isa) ? geometric_product_avx2(a, b) : quaternion_order::geometric_product(a, b);
+  return use_avx2(isa) ? avx2::geometric_product(a, b) : quaternion_order::geometric_product(a, b);
 }
 Point<double> apply(Isa isa, const Motor<double>& m, const Point<double>& x) noexcept {
-  return use_avx2(isa) ? apply_avx2(m, x) : quaternion_order::apply(m, x);
+  return use_avx2(isa) ? avx2::apply(m, x) : quaternion_order::apply(m, x);
 }
 Plane<double> apply(Isa isa, const Motor<double>& m, const Plane<double>& p) noexcept {
-  return use_avx2(isa) ? apply_avx2(m, p) : quaternion_order::apply(m, p);
+  return use_avx2(isa) ? avx2::apply(m, p) : quaternion_order::apply(m, p);
 }
 
 Plane<double> join(Isa isa, const Point<double>& a, const Point<double>& b,
                    const Point<double>& c) noexcept {
-  return use_avx2(isa) ? join_avx2(a, b, c) : pga3::join(pga3::join(a, b), c);
+  return use_avx2(isa) ? avx2::join(a, b, c) : pga3::join(pga3::join(a, b), c);
 }
 
 }  // namespace pgamesh::pga3::detail

@@ -36,6 +36,19 @@ enum class Isa { baseline, avx2 };
 /// processor with AVX2, and an OS that saves its registers).
 bool runs(Isa isa) noexcept;
 
+/// runs(Isa::avx2), read once at start-up (false before: an earlier call takes the baseline). The
+/// operators of motor.hpp and join.hpp test it inline and call the AVX2 kernel below directly: one
+/// test and one call, where a call to a dispatching function cost a second call and its frame.
+extern const bool kRunsAvx2;
+
+/// The AVX2 variants of the kernels below, to be called only where kRunsAvx2 holds.
+namespace avx2 {
+Motor<double> geometric_product(const Motor<double>& a, const Motor<double>& b) noexcept;
+Point<double> apply(const Motor<double>& m, const Point<double>& x) noexcept;
+Plane<double> apply(const Motor<double>& m, const Plane<double>& p) noexcept;
+Plane<double> join(const Point<double>& a, const Point<double>& b, const Point<double>& c) noexcept;
+}  // namespace avx2
+
 /// transform_points_loop<double> (batch.hpp): (ox, oy, oz)[i] = r (x, y, z, 1)[i], i < n.
 void transform_points(Isa isa, const double (&r)[3][4], const double* x, const double* y,
                       const double* z, double* ox, double* oy, double* oz, std::size_t n) noexcept;

@@ -49,26 +49,32 @@ constexpr T join(const Point<T>& v, const Plane<T>& p) {
 
 namespace detail {
 #ifdef PGAMESH_PGA3_SIMD
-/// join(join(a, b), c) on four-lane vectors, summed in the same order (the same bits, up to the
-/// sign of a zero). The points' lanes (e123, e032, e013, e021) hold (w, x, y, z), and the
-/// plane's (e0, e1, e2, e3) take lanes 1, 2, 3 as they come.
+/// join(join(a, b), c) on four-lane vectors, with the same products and sums (the same bits, up
+/// to the sign of a zero). The points' lanes (e123, e032, e013, e021) hold (w, x, y, z), and the
+/// plane's (e0, e1, e2, e3) take lanes 1, 2, 3 as they come. A cross product takes three shuffles
+/// instead of four when its result stays rotated: with next(v) = v's lanes (0, 2, 3, 1),
+/// u next(v) − next(u) v holds (u × v)_z, _x, _y in lanes 1, 2, 3, and is rotated back once at the
+/// end. The moment is formed negated (the subtraction reversed, an exact negation), so that the
+/// e0 coefficient −(m·P_c) is summed without a negation after it.
 template <class T>
 inline Plane<T> join_simd(const Point<T>& a, const Point<T>& b, const Point<T>& c) {
   V4<T> va, vb, vc;  // (w, x, y, z) each
   load_lanes<T>(a, 0, va), load_lanes<T>(b, 0, vb), load_lanes<T>(c, 0, vc);
-  // Lanes 1, 2, 3 are x, y, z; their next and previous coordinates are lanes (2, 3, 1) and
-  // (3, 1, 2).
   const V4<T> d = PGAMESH_LANES(va, 0, 0, 0, 0) * vb - PGAMESH_LANES(vb, 0, 0, 0, 0) * va;
-  const V4<T> m = PGAMESH_LANES(va, 0, 2, 3, 1) * PGAMESH_LANES(vb, 0, 3, 1, 2) -
-                  PGAMESH_LANES(va, 0, 3, 1, 2) * PGAMESH_LANES(vb, 0, 2, 3, 1);
-  const V4<T> n = (PGAMESH_LANES(d, 0, 2, 3, 1) * PGAMESH_LANES(vc, 0, 3, 1, 2) -
-                   PGAMESH_LANES(d, 0, 3, 1, 2) * PGAMESH_LANES(vc, 0, 2, 3, 1)) +
-                  PGAMESH_LANES(vc, 0, 0, 0, 0) * m;
-  const V4<T> mp = m * vc;  // (·, m_x p_x, m_y p_y, m_z p_z)
-  const V4<T> e0 = -((PGAMESH_LANES(mp, 1, 1, 1, 1) + PGAMESH_LANES(mp, 2, 2, 2, 2)) +
-                     PGAMESH_LANES(mp, 3, 3, 3, 3));
+  // −m = −(P_a × P_b) and d × P_c, rotated: lanes 1, 2, 3 hold their z, x, y coordinates.
+  const V4<T> vc_next = PGAMESH_LANES(vc, 0, 2, 3, 1);
+  const V4<T> minus_m = PGAMESH_LANES(va, 0, 2, 3, 1) * vb - va * PGAMESH_LANES(vb, 0, 2, 3, 1);
+  const V4<T> d_cross_c = d * vc_next - PGAMESH_LANES(d, 0, 2, 3, 1) * vc;
+  // The normal d × P_c + w_c m, rotated.
+  const V4<T> n = d_cross_c - PGAMESH_LANES(vc, 0, 0, 0, 0) * minus_m;
+  // e0 = −((m_x p_x + m_y p_y) + m_z p_z): lanes 2, 3, 1 of −m P_c (rotated alike).
+  const V4<T> mp = minus_m * PGAMESH_LANES(vc, 0, 3, 1, 2);
+  const V4<T> e0 = (PGAMESH_LANES(mp, 2, 2, 2, 2) + PGAMESH_LANES(mp, 3, 3, 3, 3)) +
+                   PGAMESH_LANES(mp, 1, 1, 1, 1);
+  // Lane 0 from e0, lanes 1, 2, 3 rotated back to x, y, z.
+  const V4<T> out_lanes = PGAMESH_LANES2(n, e0, 4, 1, 2, 3);
   Plane<T> out;
-  store_lanes<T>(out, 0, PGAMESH_LANES2(n, e0, 4, 1, 2, 3));
+  store_lanes<T>(out, 0, PGAMESH_LANES(out_lanes, 0, 2, 3, 1));
   return out;
 }
 #endif
@@ -85,7 +91,8 @@ constexpr Plane<T> join(const Point<T>& a, const Point<T>& b, const Point<T>& c)
     if (!std::is_constant_evaluated()) return detail::join_simd(a, b, c);
 #endif
   if constexpr (std::is_same_v<T, double> && detail::kDoubleOutOfLine)
-    if (!std::is_constant_evaluated()) return detail::join(detail::Isa::avx2, a, b, c);
+    if (!std::is_constant_evaluated())
+      return detail::kRunsAvx2 ? detail::avx2::join(a, b, c) : join(join(a, b), c);
   return join(join(a, b), c);
 }
 

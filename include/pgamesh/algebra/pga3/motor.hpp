@@ -105,7 +105,8 @@ template <class T>
 constexpr Motor<T> geometric_product(const Motor<T>& a, const Motor<T>& b) {
   if (!std::is_constant_evaluated()) {
     if constexpr (std::is_same_v<T, double> && detail::kDoubleOutOfLine)
-      return detail::geometric_product(detail::Isa::avx2, a, b);
+      return detail::kRunsAvx2 ? detail::avx2::geometric_product(a, b)
+                               : quaternion_order::geometric_product(a, b);
 #ifdef PGAMESH_PGA3_SIMD
     else if constexpr (detail::kHasSimd<T>)
       return detail::geometric_product_lanes(a, b);
@@ -220,7 +221,8 @@ namespace detail {
 ///   R_ii = (q_w² + v_i²) − (v_n² + v_p²),
 ///   R_in = 2 (v_i v_n − q_w v_p),  R_ip = 2 (v_i v_p + q_w v_n),
 /// and t_i = 2 ((c_w v_i − q_w c_i) + (c_n v_p − c_p v_n)), so that every lane sums the same
-/// pattern: P'_i = ((R_ii P_i + R_in P_n) + R_ip P_p) + w t_i; the weight is (q_w² + v·v) w.
+/// pattern: P'_i = R_ii P_i + 2 h_i, h_i = (R_in/2 P_n + R_ip/2 P_p) + w t_i/2 (the halves are
+/// what is computed: one doubling instead of three); the weight is (q_w² + v·v) w.
 /// The point's lanes (w, x, y, z) match the motor halves' (s, e23, e31, e12) = (q_w, −v) and
 /// (e0123, e01, e02, e03) = (c_w, c), so the halves are used as loaded (u = −v: the signs are
 /// folded into the formulas); n and p are lanes (2, 3, 1) and (3, 1, 2), and lane 0 sums
@@ -237,9 +239,10 @@ inline Point<T> apply_lanes(const Motor<T>& mo, const Point<T>& x) {
   const V4<T> pn = PGAMESH_LANES(pt, 0, 2, 3, 1), pp = PGAMESH_LANES(pt, 0, 3, 1, 2);
   const V4<T> a = qw * qw + ui * ui, b = un * un + up * up;
   const V4<T> rii = a - b, weight = (a + b) * w;  // weight: lane 0 holds (q_w² + v·v) w
-  const V4<T> rin = u * un + qw * up, rip = u * up - qw * un;
-  const V4<T> t = (cp * un - cn * up) - (cw * u + qw * c);
-  const V4<T> r = ((rii * pt + (rin + rin) * pn) + (rip + rip) * pp) + (w + w) * t;
+  const V4<T> rin = u * un + qw * up, rip = u * up - qw * un;  // R_in / 2, R_ip / 2
+  const V4<T> t = (cp * un - cn * up) - (cw * u + qw * c);     // t / 2
+  const V4<T> half = (rin * pn + rip * pp) + w * t;
+  const V4<T> r = rii * pt + (half + half);
   Point<T> out;
   store_lanes<T>(out, 0, PGAMESH_LANES2(r, weight, 4, 1, 2, 3));
   return out;
@@ -248,22 +251,23 @@ inline Point<T> apply_lanes(const Motor<T>& mo, const Point<T>& x) {
 /// The plane sandwich with lane-uniform sums (to rounding quaternion_order::apply), M p M̃
 /// (docs/conventions.md §7, planes §2): the normal n' = R n with apply_lanes' matrix R, and the e0
 /// coefficient |q|² d + 2 Σ_i ((q_w c_i − c_w v_i) n_i + (v × n)_i c_i), quaternion_order::apply's
-/// 2 (−c_w (v·n) + q_w (n·c) + (v × n)·c) summed lane by lane. Lanes in the plane's storage order
-/// (e0, e1, e2, e3): n and p of lanes 1, 2, 3 are lanes (2, 3, 1) and (3, 1, 2).
+/// 2 (−c_w (v·n) + q_w (n·c) + (v × n)·c) summed lane by lane. As for points, u = −v is used as
+/// loaded, its signs folded into the formulas. Lanes in the plane's storage order (e0, e1, e2, e3):
+/// n and p of lanes 1, 2, 3 are lanes (2, 3, 1) and (3, 1, 2).
 template <class T>
 inline Plane<T> apply_lanes(const Motor<T>& mo, const Plane<T>& pl) {
-  V4<T> lo, hi, n;  // (s, e23, e31, e12), (e0123, e01, e02, e03), (e0, e1, e2, e3)
-  load_motor_lanes<T>(mo, lo, hi), load_lanes<T>(pl, 0, n);
-  const V4<T> v = -lo, c = hi;  // (·, x, y, z) of q_v and c_v
-  const V4<T> qw = PGAMESH_LANES(lo, 0, 0, 0, 0), cw = PGAMESH_LANES(hi, 0, 0, 0, 0);
+  V4<T> u, c, n;  // (q_w, −v), (c_w, c), (d, n_x, n_y, n_z)
+  load_motor_lanes<T>(mo, u, c), load_lanes<T>(pl, 0, n);
+  const V4<T> qw = PGAMESH_LANES(u, 0, 0, 0, 0), cw = PGAMESH_LANES(c, 0, 0, 0, 0);
   const V4<T> d = PGAMESH_LANES(n, 0, 0, 0, 0);
-  const V4<T> vn = PGAMESH_LANES(v, 0, 2, 3, 1), vp = PGAMESH_LANES(v, 0, 3, 1, 2);
+  const V4<T> un = PGAMESH_LANES(u, 0, 2, 3, 1), up = PGAMESH_LANES(u, 0, 3, 1, 2);
   const V4<T> nn = PGAMESH_LANES(n, 0, 2, 3, 1), np = PGAMESH_LANES(n, 0, 3, 1, 2);
-  const V4<T> vv = v * v;
-  const V4<T> a = qw * qw + vv, b = PGAMESH_LANES(vv, 0, 2, 3, 1) + PGAMESH_LANES(vv, 0, 3, 1, 2);
-  const V4<T> rin = v * vn - qw * vp, rip = v * vp + qw * vn;
-  const V4<T> r = ((a - b) * n + (rin + rin) * nn) + (rip + rip) * np;
-  const V4<T> e = (qw * c - cw * v) * n + (vn * np - vp * nn) * c;
+  const V4<T> uu = u * u;
+  const V4<T> a = qw * qw + uu, b = PGAMESH_LANES(uu, 0, 2, 3, 1) + PGAMESH_LANES(uu, 0, 3, 1, 2);
+  const V4<T> rin = u * un + qw * up, rip = u * up - qw * un;  // R_in / 2, R_ip / 2
+  const V4<T> half = rin * nn + rip * np;
+  const V4<T> r = (a - b) * n + (half + half);
+  const V4<T> e = (qw * c + cw * u) * n + (up * nn - un * np) * c;
   const V4<T> sum = (e + PGAMESH_LANES(e, 0, 2, 3, 1)) + PGAMESH_LANES(e, 0, 3, 1, 2);
   const V4<T> offset = (a + b) * d + (sum + sum);  // lane 1: the e0 coefficient
   Plane<T> out;
@@ -282,7 +286,7 @@ template <class T>
 constexpr Point<T> apply(const Motor<T>& m, const Point<T>& x) {
   if (!std::is_constant_evaluated()) {
     if constexpr (std::is_same_v<T, double> && detail::kDoubleOutOfLine)
-      return detail::apply(detail::Isa::avx2, m, x);
+      return detail::kRunsAvx2 ? detail::avx2::apply(m, x) : quaternion_order::apply(m, x);
 #ifdef PGAMESH_PGA3_SIMD
     else if constexpr (detail::kHasSimd<T>)
       return detail::apply_lanes(m, x);
@@ -298,7 +302,7 @@ template <class T>
 constexpr Plane<T> apply(const Motor<T>& m, const Plane<T>& p) {
   if (!std::is_constant_evaluated()) {
     if constexpr (std::is_same_v<T, double> && detail::kDoubleOutOfLine)
-      return detail::apply(detail::Isa::avx2, m, p);
+      return detail::kRunsAvx2 ? detail::avx2::apply(m, p) : quaternion_order::apply(m, p);
 #ifdef PGAMESH_PGA3_SIMD
     else if constexpr (detail::kHasSimd<T>)
       return detail::apply_lanes(m, p);
