@@ -125,23 +125,24 @@ template <class T>
 Line<T> log(const Motor<T>& mo) {
   const detail::Quat<T> q = detail::real_part(mo), c = detail::dual_part(mo);
   const T sn = length(q.v), w = q.w;
-  const T theta = std::atan2(sn, w);
+  // Everything that does not need θ comes before atan2, whose call clobbers every vector
+  // register: what is computed after it lengthens the chain (the division 1/sin θ did).
   Vec3<T> axis;
-  T ratio;  // θ / sin θ
+  T inv_sn = T(1);  // 1 / sin θ; with the ratio θ / sin θ = 1 for θ = 0
   if (sn > T(0)) {
-    const T inv = T(1) / sn;
-    axis = inv * q.v;
-    ratio = theta * inv;
+    inv_sn = T(1) / sn;
+    axis = inv_sn * q.v;
   } else {
     const T cl = length(c.v);
     axis = cl > T(0) ? c.v / cl : Vec3<T>{T(1), T(0), T(0)};
-    ratio = T(1);
   }
   // Split v along the axis: c∥ = v∥ cos θ, c_w = −v∥ sin θ, c⊥ = v⊥ sinc θ.
   const T c_par = dot(c.v, axis);
   const Vec3<T> c_perp = c.v - c_par * axis;
-  const Vec3<T> v = ratio * c_perp + (c_par * w - c.w * sn) * axis;
-  return line_from_plucker(-theta * axis, v);
+  const Vec3<T> v_par = (c_par * w - c.w * sn) * axis;
+  const T theta = std::atan2(sn, w);
+  const T ratio = sn > T(0) ? theta * inv_sn : T(1);  // θ / sin θ
+  return line_from_plucker(-theta * axis, ratio * c_perp + v_par);
 }
 
 /// √M of a normalized motor: normalized(1 + M) (1 + M = √M · 2 cosh(B/2), a dual scalar times
