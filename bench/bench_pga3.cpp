@@ -14,6 +14,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <random>
 #include <vector>
 
@@ -37,6 +38,15 @@ using namespace pgamesh::pga3;
 #define PGAMESH_BENCH_INLINE [[gnu::flatten]]
 
 constexpr std::size_t kRing = 1024;
+
+// PGAMESH_BENCH_ITERATIONS=N runs every benchmark for exactly N iterations, with no search for
+// the count: compare_klein.sh counts instructions per item under callgrind that way (the search's
+// shorter rounds would add to the count but not to the items).
+void iterations_from_environment(benchmark::internal::Benchmark* b) {
+  if (const char* n = std::getenv("PGAMESH_BENCH_ITERATIONS"))
+    b->Iterations(std::strtoll(n, nullptr, 10));
+}
+#define PGAMESH_BENCHMARK(...) BENCHMARK(__VA_ARGS__)->Apply(iterations_from_environment)
 
 template <class T>
 struct Inputs {
@@ -247,32 +257,32 @@ PGAMESH_BENCH_INLINE void BM_GeneralSandwichPoint(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations());
 }
 
-BENCHMARK(BM_MotorTimesMotor<double>);
-BENCHMARK(BM_MotorTimesMotor<float>);
-BENCHMARK(BM_SandwichPoint<double>);
-BENCHMARK(BM_SandwichPoint<float>);
-BENCHMARK(BM_SandwichPlane<double>);
-BENCHMARK(BM_SandwichPlane<float>);
-BENCHMARK(BM_SandwichLine<double>);
-BENCHMARK(BM_SandwichLine<float>);
-BENCHMARK(BM_JoinThreePoints<double>);
-BENCHMARK(BM_JoinThreePoints<float>);
-BENCHMARK(BM_Exp<double>);
-BENCHMARK(BM_Exp<float>);
-BENCHMARK(BM_Log<double>);
-BENCHMARK(BM_Log<float>);
-BENCHMARK(BM_SandwichPointArray<double>);
-BENCHMARK(BM_SandwichPointArray<float>);
-BENCHMARK(BM_SandwichPlaneArray<double>);
-BENCHMARK(BM_SandwichPlaneArray<float>);
-BENCHMARK(BM_MotorTimesMotorOutOfLine<detail::Isa::baseline>);
-BENCHMARK(BM_MotorTimesMotorOutOfLine<detail::Isa::avx2>);
-BENCHMARK(BM_SandwichPointOutOfLine<detail::Isa::baseline>);
-BENCHMARK(BM_SandwichPointOutOfLine<detail::Isa::avx2>);
-BENCHMARK(BM_SandwichPlaneOutOfLine<detail::Isa::baseline>);
-BENCHMARK(BM_SandwichPlaneOutOfLine<detail::Isa::avx2>);
-BENCHMARK(BM_GeneralGeometricProduct<double>);
-BENCHMARK(BM_GeneralSandwichPoint<double>);
+PGAMESH_BENCHMARK(BM_MotorTimesMotor<double>);
+PGAMESH_BENCHMARK(BM_MotorTimesMotor<float>);
+PGAMESH_BENCHMARK(BM_SandwichPoint<double>);
+PGAMESH_BENCHMARK(BM_SandwichPoint<float>);
+PGAMESH_BENCHMARK(BM_SandwichPlane<double>);
+PGAMESH_BENCHMARK(BM_SandwichPlane<float>);
+PGAMESH_BENCHMARK(BM_SandwichLine<double>);
+PGAMESH_BENCHMARK(BM_SandwichLine<float>);
+PGAMESH_BENCHMARK(BM_JoinThreePoints<double>);
+PGAMESH_BENCHMARK(BM_JoinThreePoints<float>);
+PGAMESH_BENCHMARK(BM_Exp<double>);
+PGAMESH_BENCHMARK(BM_Exp<float>);
+PGAMESH_BENCHMARK(BM_Log<double>);
+PGAMESH_BENCHMARK(BM_Log<float>);
+PGAMESH_BENCHMARK(BM_SandwichPointArray<double>);
+PGAMESH_BENCHMARK(BM_SandwichPointArray<float>);
+PGAMESH_BENCHMARK(BM_SandwichPlaneArray<double>);
+PGAMESH_BENCHMARK(BM_SandwichPlaneArray<float>);
+PGAMESH_BENCHMARK(BM_MotorTimesMotorOutOfLine<detail::Isa::baseline>);
+PGAMESH_BENCHMARK(BM_MotorTimesMotorOutOfLine<detail::Isa::avx2>);
+PGAMESH_BENCHMARK(BM_SandwichPointOutOfLine<detail::Isa::baseline>);
+PGAMESH_BENCHMARK(BM_SandwichPointOutOfLine<detail::Isa::avx2>);
+PGAMESH_BENCHMARK(BM_SandwichPlaneOutOfLine<detail::Isa::baseline>);
+PGAMESH_BENCHMARK(BM_SandwichPlaneOutOfLine<detail::Isa::avx2>);
+PGAMESH_BENCHMARK(BM_GeneralGeometricProduct<double>);
+PGAMESH_BENCHMARK(BM_GeneralSandwichPoint<double>);
 
 #ifdef PGAMESH_BENCH_KLEIN
 // ---- klein on the float ring -------------------------------------------------------------------
@@ -404,15 +414,15 @@ PGAMESH_BENCH_INLINE void BM_Klein_SandwichPlaneArray(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * kRing);
 }
 
-BENCHMARK(BM_Klein_MotorTimesMotor);
-BENCHMARK(BM_Klein_SandwichPoint);
-BENCHMARK(BM_Klein_SandwichPlane);
-BENCHMARK(BM_Klein_SandwichLine);
-BENCHMARK(BM_Klein_JoinThreePoints);
-BENCHMARK(BM_Klein_Exp);
-BENCHMARK(BM_Klein_Log);
-BENCHMARK(BM_Klein_SandwichPointArray);
-BENCHMARK(BM_Klein_SandwichPlaneArray);
+PGAMESH_BENCHMARK(BM_Klein_MotorTimesMotor);
+PGAMESH_BENCHMARK(BM_Klein_SandwichPoint);
+PGAMESH_BENCHMARK(BM_Klein_SandwichPlane);
+PGAMESH_BENCHMARK(BM_Klein_SandwichLine);
+PGAMESH_BENCHMARK(BM_Klein_JoinThreePoints);
+PGAMESH_BENCHMARK(BM_Klein_Exp);
+PGAMESH_BENCHMARK(BM_Klein_Log);
+PGAMESH_BENCHMARK(BM_Klein_SandwichPointArray);
+PGAMESH_BENCHMARK(BM_Klein_SandwichPlaneArray);
 
 // ---- the same answers --------------------------------------------------------------------------
 

@@ -11,8 +11,9 @@
 #   BUILD=build/bench-klein  REPS=10  CPU=1 (taskset core; empty: no pinning)
 #   CXXFLAGS_EXTRA="-march=native"  (extra compiler flags for both libraries; default: none)
 #   COUNT=1  also count instructions per item under valgrind's callgrind (noise-free on a loaded
-#            machine): Ir inside each benchmark function / items, loop and DoNotOptimize included
-#            (the same loop for both libraries). COUNT=0 skips it.
+#            machine): Ir inside each benchmark function per item, loop and DoNotOptimize included
+#            (the same loop for both libraries), over a fixed number of iterations
+#            (PGAMESH_BENCH_ITERATIONS). COUNT=0 skips it.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 klein=${1:?usage: bench/compare_klein.sh KLEIN (git dir or folder with public/klein)}
@@ -56,14 +57,14 @@ counts="$build/instructions.txt"
 if [ "${COUNT:-1}" = 1 ] && command -v valgrind > /dev/null; then
   for name in "${names[@]}"; do
     for bm in "BM_$name<double>" "BM_$name<float>" "BM_Klein_$name"; do
-      items=$(valgrind --tool=callgrind --callgrind-out-file="$build/callgrind.out" \
-        --collect-atstart=no "--toggle-collect=*$bm(*" "$build/bench/bench_pga3_klein" \
-        "--benchmark_filter=^$bm\$" --benchmark_min_time=0.01 --benchmark_format=json \
-        2> /dev/null | sed -n '/^{/,$p' | python3 -c 'import json, sys
-b = json.load(sys.stdin)["benchmarks"][0]
-print(b["iterations"] * (1024 if "Array" in b["name"] else 1))')
-      ir=$(sed -n 's/^totals: //p' "$build/callgrind.out")
-      echo "$bm $ir $items" >> "$counts"
+      iterations=100000 per_iteration=1  # the batch benchmarks: 1024 items per iteration
+      [[ $name == *Array ]] && iterations=1000 per_iteration=1024
+      PGAMESH_BENCH_ITERATIONS=$iterations valgrind --tool=callgrind \
+        --callgrind-out-file="$build/callgrind.out" --collect-atstart=no \
+        "--toggle-collect=*$bm(*" "$build/bench/bench_pga3_klein" "--benchmark_filter=^$bm(/|$)" \
+        > /dev/null 2>&1
+      echo "$bm $(sed -n 's/^totals: //p' "$build/callgrind.out") $((iterations * per_iteration))" \
+        >> "$counts"
     done
   done
 fi
