@@ -121,15 +121,18 @@ Motor<T> exp(const Line<T>& b) {
 /// θ = atan2(|q_v|, q_w) ∈ [0, π] (M and −M are the same motion; negate M first, when its
 /// scalar part is negative, for the shortest screw). Pure translations (θ = 0) return
 /// −½ t·(e01, e02, e03); θ = π picks the axis from the translation part (or x if there is none).
+/// It inverts exp's formula at the top of this file (motors as in docs/conventions.md §7):
+/// q = cos θ + u sinc θ gives θ and the axis u/θ, and the dual part gives v.
 template <class T>
 Line<T> log(const Motor<T>& mo) {
   const detail::Quat<T> q = detail::real_part(mo), c = detail::dual_part(mo);
   const T sn = length(q.v), w = q.w;
+  const bool turns = sn > T(0);
   // Everything that does not need θ comes before atan2, whose call clobbers every vector
   // register: what is computed after it lengthens the chain (the division 1/sin θ did).
   Vec3<T> axis;
-  T inv_sn = T(1);  // 1 / sin θ; with the ratio θ / sin θ = 1 for θ = 0
-  if (sn > T(0)) {
+  T inv_sn{};  // 1 / sin θ, where the motor turns
+  if (turns) {
     inv_sn = T(1) / sn;
     axis = inv_sn * q.v;
   } else {
@@ -141,7 +144,7 @@ Line<T> log(const Motor<T>& mo) {
   const Vec3<T> c_perp = c.v - c_par * axis;
   const Vec3<T> v_par = (c_par * w - c.w * sn) * axis;
   const T theta = std::atan2(sn, w);
-  const T ratio = sn > T(0) ? theta * inv_sn : T(1);  // θ / sin θ
+  const T ratio = turns ? theta * inv_sn : T(1);  // θ / sin θ = 1/sinc θ (1 without a turn)
   return line_from_plucker(-theta * axis, ratio * c_perp + v_par);
 }
 

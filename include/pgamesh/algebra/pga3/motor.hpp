@@ -61,11 +61,11 @@ template <class T>
 ///   f_i = a_0 d_i + b_i c_0 + a_k d_j + b_k c_j − (a_i d_0 + b_0 c_i + a_j d_k + b_j c_k)
 ///                                                                     → (e0123, e01, e02, e03)
 /// (the dual-quaternion product of quaternion.hpp written out, motors as in docs/conventions.md
-/// §7). Each sum is a few products of two
-/// shuffled vectors, and a term subtracted in lanes 1, 2, 3 is added in lane 0 by one flip of lane
-/// 0's sign bit; the lane-0 products are placed so that the shuffles are shared: 14 shuffles,
-/// 12 multiplications, 10 additions, 2 sign flips. Other rounding than the quaternion order of
-/// quaternion_order::geometric_product (a few ulps; docs/pga3.md "Two summation orders").
+/// §7). Each sum is a few products of two shuffled vectors, and a term subtracted in lanes 1, 2, 3
+/// is added in lane 0 by one flip of lane 0's sign bit; the lane-0 products are placed so that the
+/// shuffles are shared: 14 shuffles, 12 multiplications, 10 additions, 2 sign flips. Other rounding
+/// than the quaternion order of quaternion_order::geometric_product (a few ulps; docs/pga3.md "Two
+/// summation orders").
 template <class T>
 inline Motor<T> geometric_product_lanes(const Motor<T>& left, const Motor<T>& right) {
   V4<T> a, b, c, d;
